@@ -1,0 +1,67 @@
+// Copyright (c) 2026 Quad_mesher_2 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Quad_mesher_2 developers
+
+#ifndef CGAL_QUAD_MESHER_2_QUAD_MESH_2_H
+#define CGAL_QUAD_MESHER_2_QUAD_MESH_2_H
+
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/properties.h>
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Quad_mesher_2 {
+
+/// \ingroup PkgQuadMesher2Ref
+/// A light indexed all-quadrilateral mesh: the output of every meshing stage.
+/// Each quad lists four indices into `points`, counter-clockwise. Vertices are unique:
+/// no two entries of `points` are equal and every point is used by some quad.
+template <class Point_2_>
+struct Quad_mesh_2
+{
+  typedef Point_2_ Point_2;
+  typedef std::array<std::size_t, 4> Quad;
+
+  std::vector<Point_2> points;
+  std::vector<Quad> quads;
+
+  std::size_t number_of_vertices() const { return points.size(); }
+  std::size_t number_of_quads() const { return quads.size(); }
+  void clear() { points.clear(); quads.clear(); }
+};
+
+/// \ingroup PkgQuadMesher2Ref
+/// Appends `mesh` to `graph`, a model of `MutableFaceGraph` whose vertex point type is
+/// constructible from `Point_2`. Returns `false` (leaving `graph` partly filled) if a face
+/// could not be added, which happens only for a non-manifold input.
+template <class Point_2, class FaceGraph>
+bool copy_to_face_graph(const Quad_mesh_2<Point_2>& mesh, FaceGraph& graph)
+{
+  typedef typename boost::graph_traits<FaceGraph>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::graph_traits<FaceGraph>::face_descriptor face_descriptor;
+  auto vpm = get(CGAL::vertex_point, graph);
+  std::vector<vertex_descriptor> vertices;
+  vertices.reserve(mesh.points.size());
+  for(const Point_2& p : mesh.points) {
+    vertex_descriptor v = add_vertex(graph);
+    put(vpm, v, p);
+    vertices.push_back(v);
+  }
+  std::array<vertex_descriptor, 4> face;
+  for(const auto& q : mesh.quads) {
+    for(int k = 0; k < 4; ++k)
+      face[k] = vertices[q[k]];
+    if(CGAL::Euler::add_face(face, graph) == boost::graph_traits<FaceGraph>::null_face())
+      return false;
+  }
+  return true;
+}
+
+} // namespace Quad_mesher_2
+} // namespace CGAL
+
+#endif // CGAL_QUAD_MESHER_2_QUAD_MESH_2_H
