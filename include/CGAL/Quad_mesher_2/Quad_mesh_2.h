@@ -42,7 +42,6 @@ template <class Point_2, class FaceGraph>
 bool copy_to_face_graph(const Quad_mesh_2<Point_2>& mesh, FaceGraph& graph)
 {
   typedef typename boost::graph_traits<FaceGraph>::vertex_descriptor vertex_descriptor;
-  typedef typename boost::graph_traits<FaceGraph>::face_descriptor face_descriptor;
   auto vpm = get(CGAL::vertex_point, graph);
   std::vector<vertex_descriptor> vertices;
   vertices.reserve(mesh.points.size());

@@ -1,0 +1,375 @@
+// Copyright (c) 2026 Quad_mesher_2 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Quad_mesher_2 developers
+
+#ifndef CGAL_QUAD_MESHER_2_BALANCED_QUADTREE_2_H
+#define CGAL_QUAD_MESHER_2_BALANCED_QUADTREE_2_H
+
+#include <CGAL/Quad_mesher_2/Cell_key.h>
+#include <CGAL/Quad_mesher_2/Meshing_error.h>
+#include <CGAL/Quad_mesher_2/internal/Key_map.h>
+
+#include <CGAL/assertions.h>
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Quad_mesher_2 {
+
+/// \ingroup PkgQuadMesher2Ref
+/// An adaptive quadtree over a row-major grid of `nx` by `ny` square root cells, kept
+/// *strongly balanced* on demand: leaves that share an edge or only a corner differ by at
+/// most one level.
+///
+/// The root grid's side is a power of two and its lower-left corner a multiple of the finest
+/// lattice spacing, so every cell corner (and every vertex the 2-refinement templates add at
+/// half a cell) is an exactly representable `double`: the same code is exact under
+/// `Exact_predicates_exact_constructions_kernel` and loses nothing under
+/// `Exact_predicates_inexact_constructions_kernel`. A constructor argument that would break
+/// this raises `Meshing_error`.
+///
+/// \tparam GeomTraits a model of `QuadMesherTraits_2`
+template <class GeomTraits>
+class Balanced_quadtree_2
+{
+public:
+  typedef GeomTraits Geom_traits;
+  typedef typename GeomTraits::FT FT;
+  typedef typename GeomTraits::Point_2 Point_2;
+  typedef typename GeomTraits::Iso_rectangle_2 Iso_rectangle_2;
+
+  /// Builds a tree of root cells only, covering `bbox` with a margin, able to refine down to
+  /// `max_depth` (cells of side `root_side/2^max_depth`; templates add half of that).
+  Balanced_quadtree_2(const Iso_rectangle_2& bbox, int max_depth = 20,
+                      const GeomTraits& traits = GeomTraits())
+    : m_traits(traits), m_max_depth(max_depth)
+  {
+    if(max_depth < 0 || max_depth > max_supported_depth)
+      throw Meshing_error("maximum quadtree depth " + std::to_string(max_depth)
+                          + " is outside [0, " + std::to_string(max_supported_depth) + "]");
+    auto xmin = CGAL::to_interval(m_traits.compute_xmin_2_object()(bbox));
+    auto ymin = CGAL::to_interval(m_traits.compute_ymin_2_object()(bbox));
+    auto xmax = CGAL::to_interval(m_traits.compute_xmax_2_object()(bbox));
+    auto ymax = CGAL::to_interval(m_traits.compute_ymax_2_object()(bbox));
+    setup_root(xmin.first, ymin.first, xmax.second, ymax.second);
+  }
+
+  /// \name Root grid and lattice
+  /// @{
+  int max_depth() const { return m_max_depth; }
+  std::uint32_t root_cells_x() const { return m_nx; }
+  std::uint32_t root_cells_y() const { return m_ny; }
+  double root_side() const { return m_root_side; }
+  double origin_x() const { return m_ox; }
+  double origin_y() const { return m_oy; }
+  /// side of a cell at `level`
+  double cell_side(int level) const { return std::ldexp(m_root_side, -level); }
+  /// the lattice level of the vertices of a templated mesh: one below `max_depth()`
+  int vertex_level() const { return m_max_depth + 1; }
+  /// the lattice coordinate `x` at `level`, as the exact double it is
+  double lattice_x(int level, std::int64_t x) const { return m_ox + double(x) * cell_side(level); }
+  double lattice_y(int level, std::int64_t y) const { return m_oy + double(y) * cell_side(level); }
+  Point_2 lattice_point(int level, std::int64_t x, std::int64_t y) const
+  {
+    return m_traits.construct_point_2_object()(FT(lattice_x(level, x)), FT(lattice_y(level, y)));
+  }
+  std::uint32_t cells_x(int level) const { return m_nx << level; }
+  std::uint32_t cells_y(int level) const { return m_ny << level; }
+  bool in_grid(int level, std::int64_t i, std::int64_t j) const
+  {
+    return i >= 0 && j >= 0 && i < std::int64_t(cells_x(level)) && j < std::int64_t(cells_y(level));
+  }
+  /// @}
+
+  /// \name Cells
+  /// @{
+  bool is_node(const Cell_key& k) const { return m_nodes.find(k.code()) != nullptr; }
+  bool is_leaf(const Cell_key& k) const
+  {
+    const std::uint32_t* v = m_nodes.find(k.code());
+    return v != nullptr && *v == LEAF;
+  }
+  /// `true` if `k` is a node that has children
+  bool is_split(const Cell_key& k) const
+  {
+    const std::uint32_t* v = m_nodes.find(k.code());
+    return v != nullptr && *v == SPLIT;
+  }
+  std::size_t number_of_leaves() const { return m_number_of_leaves; }
+  std::size_t number_of_nodes() const { return m_nodes.size(); }
+  /// the deepest level of any leaf
+  int depth() const { return m_depth; }
+
+  /// calls `f(const Cell_key&)` on every leaf
+  template <class Function>
+  void for_each_leaf(Function f) const
+  {
+    m_nodes.for_each([&](std::uint64_t code, std::uint32_t v) {
+      if(v == LEAF)
+        f(Cell_key::from_code(code));
+    });
+  }
+  std::vector<Cell_key> leaves() const
+  {
+    std::vector<Cell_key> result;
+    result.reserve(m_number_of_leaves);
+    for_each_leaf([&](const Cell_key& k) { result.push_back(k); });
+    std::sort(result.begin(), result.end());
+    return result;
+  }
+
+  Iso_rectangle_2 cell_rectangle(const Cell_key& k) const
+  {
+    return m_traits.construct_iso_rectangle_2_object()(lattice_point(k.level, k.i, k.j),
+                                                       lattice_point(k.level, k.i + 1, k.j + 1));
+  }
+  Point_2 cell_center(const Cell_key& k) const
+  {
+    return lattice_point(k.level + 1, 2 * std::int64_t(k.i) + 1, 2 * std::int64_t(k.j) + 1);
+  }
+
+  /// The leaf that contains `p` (cells are closed below and to the left, open above and to
+  /// the right); `p` must lie in the root grid. Decided with exact comparisons.
+  Cell_key locate(const Point_2& p) const
+  {
+    std::uint32_t i = lattice_index(m_traits.compute_x_2_object()(p), m_ox, cells_x(m_max_depth));
+    std::uint32_t j = lattice_index(m_traits.compute_y_2_object()(p), m_oy, cells_y(m_max_depth));
+    for(int level = 0;; ++level) {
+      Cell_key k(level, i >> (m_max_depth - level), j >> (m_max_depth - level));
+      if(is_leaf(k))
+        return k;
+    }
+  }
+  /// `true` if `p` lies in the half-open root grid
+  bool contains(const Point_2& p) const
+  {
+    const FT x = m_traits.compute_x_2_object()(p), y = m_traits.compute_y_2_object()(p);
+    return !(x < FT(m_ox)) && x < FT(lattice_x(0, m_nx)) && !(y < FT(m_oy))
+           && y < FT(lattice_y(0, m_ny));
+  }
+  /// @}
+
+  /// \name Refinement
+  /// @{
+  /// Splits leaf `k` into its four children.
+  void split(const Cell_key& k)
+  {
+    std::uint32_t* v = m_nodes.find(k.code());
+    CGAL_precondition(v != nullptr && *v == LEAF);
+    if(k.level >= m_max_depth)
+      throw Meshing_error(depth_message(k));
+    *v = SPLIT;
+    --m_number_of_leaves;
+    for(int dy = 0; dy < 2; ++dy)
+      for(int dx = 0; dx < 2; ++dx)
+        add_leaf(k.child(dx, dy));
+  }
+
+  /// Splits leaves, children first, as long as `needs_split(const Cell_key&)` says so.
+  /// Throws `Meshing_error` if it asks to split a cell at `max_depth()`.
+  template <class SplitPredicate>
+  void refine(SplitPredicate needs_split)
+  {
+    std::vector<Cell_key> stack = leaves();
+    while(!stack.empty()) {
+      Cell_key k = stack.back();
+      stack.pop_back();
+      if(!is_leaf(k) || !needs_split(k))
+        continue;
+      split(k);
+      for(int dy = 0; dy < 2; ++dy)
+        for(int dx = 0; dx < 2; ++dx)
+          stack.push_back(k.child(dx, dy));
+    }
+  }
+
+  /// Refines until the leaf containing `p` has at least `level`; `p` must lie in the grid.
+  void refine_at(const Point_2& p, int level)
+  {
+    CGAL_precondition(contains(p));
+    if(level > m_max_depth)
+      throw Meshing_error(depth_message(Cell_key(level, 0, 0), &p));
+    std::uint32_t i = lattice_index(m_traits.compute_x_2_object()(p), m_ox, cells_x(m_max_depth));
+    std::uint32_t j = lattice_index(m_traits.compute_y_2_object()(p), m_oy, cells_y(m_max_depth));
+    for(int l = 0; l < level; ++l) {
+      Cell_key k(l, i >> (m_max_depth - l), j >> (m_max_depth - l));
+      if(is_leaf(k))
+        split(k);
+    }
+  }
+
+  /// Splits leaves until any two leaves that share an edge or a corner differ by at most one
+  /// level. One sweep from the deepest level up suffices: a leaf at level `L` only ever forces
+  /// splits that create leaves above `L`, and those are visited later in the sweep.
+  void balance()
+  {
+    std::vector<std::vector<Cell_key>> by_level(m_max_depth + 1);
+    for_each_leaf([&](const Cell_key& k) { by_level[k.level].push_back(k); });
+    m_new_leaves = &by_level;
+    for(int level = m_depth; level >= 2; --level) {
+      // by_level[level] does not grow while this level is processed.
+      for(std::size_t n = 0; n < by_level[level].size(); ++n) {
+        const Cell_key k = by_level[level][n];
+        if(!is_leaf(k))
+          continue;
+        for(int dy = -1; dy <= 1; ++dy)
+          for(int dx = -1; dx <= 1; ++dx) {
+            std::int64_t ni = std::int64_t(k.i) + dx, nj = std::int64_t(k.j) + dy;
+            if((dx == 0 && dy == 0) || !in_grid(level, ni, nj))
+              continue;
+            ensure_node(Cell_key(level - 1, std::uint32_t(ni >> 1), std::uint32_t(nj >> 1)));
+          }
+      }
+    }
+    m_new_leaves = nullptr;
+    CGAL_expensive_postcondition(is_strongly_balanced());
+  }
+
+  /// `true` if leaves sharing an edge or a corner never differ by more than one level.
+  bool is_strongly_balanced() const
+  {
+    bool ok = true;
+    for_each_leaf([&](const Cell_key& k) {
+      for(int dy = -1; dy <= 1 && ok; ++dy)
+        for(int dx = -1; dx <= 1 && ok; ++dx) {
+          std::int64_t ni = std::int64_t(k.i) + dx, nj = std::int64_t(k.j) + dy;
+          if(k.level < 2 || (dx == 0 && dy == 0) || !in_grid(k.level, ni, nj))
+            continue;
+          if(!is_node(Cell_key(k.level - 1, std::uint32_t(ni >> 1), std::uint32_t(nj >> 1))))
+            ok = false;
+        }
+    });
+    return ok;
+  }
+  /// @}
+
+  const GeomTraits& geom_traits() const { return m_traits; }
+
+  std::size_t memory_bytes() const { return m_nodes.memory_bytes(); }
+
+  /// deepest `max_depth` the key packing allows
+  static constexpr int max_supported_depth = 24;
+
+private:
+  static constexpr std::uint32_t LEAF = 1;
+  static constexpr std::uint32_t SPLIT = 0;
+
+  void add_leaf(const Cell_key& k)
+  {
+    m_nodes.insert(k.code(), LEAF);
+    ++m_number_of_leaves;
+    m_depth = (std::max)(m_depth, k.level);
+    if(m_new_leaves != nullptr)
+      (*m_new_leaves)[k.level].push_back(k);
+  }
+
+  // Makes `k` a node by splitting the leaf that covers it, and that leaf's descendants on
+  // the way down to `k`.
+  void ensure_node(const Cell_key& k)
+  {
+    if(is_node(k))
+      return;
+    int level = k.level - 1;
+    while(!is_node(Cell_key(level, k.i >> (k.level - level), k.j >> (k.level - level))))
+      --level;
+    for(; level < k.level; ++level)
+      split(Cell_key(level, k.i >> (k.level - level), k.j >> (k.level - level)));
+  }
+
+  void setup_root(double xmin, double ymin, double xmax, double ymax)
+  {
+    if(!(std::isfinite(xmin) && std::isfinite(ymin) && std::isfinite(xmax) && std::isfinite(ymax))
+       || xmin > xmax || ymin > ymax)
+      throw Meshing_error("the bounding box of the input is empty or not finite");
+    const double w = xmax - xmin, h = ymax - ymin;
+    double extent = (std::max)(w, h);
+    // Root cells are at least 1/max_aspect of the longer side, so that the grid holds at
+    // most max_aspect cells in a row; a thin input gets a row of square cells, not one huge
+    // square.
+    double side_goal = (std::max)((std::min)(w, h), extent / max_aspect);
+    if(side_goal <= 0) // a single point, or all points equal
+      side_goal = (std::max)(std::abs(xmin), std::abs(ymin)) > 0
+                    ? (std::max)(std::abs(xmin), std::abs(ymin)) * 0x1p-20 : 1.0;
+    int e = 0;
+    std::frexp(side_goal, &e); // side_goal in [2^(e-1), 2^e)
+    m_root_side = std::ldexp(1.0, e);
+    const double finest = std::ldexp(m_root_side, -(m_max_depth + 1));
+    m_ox = std::floor(xmin / finest) * finest;
+    m_oy = std::floor(ymin / finest) * finest;
+    // Strictly inside: cells are half-open, so the upper bounds need their own cell.
+    m_nx = std::uint32_t(std::floor((xmax - m_ox) / m_root_side)) + 1;
+    m_ny = std::uint32_t(std::floor((ymax - m_oy) / m_root_side)) + 1;
+    if(m_nx > max_aspect + 2 || m_ny > max_aspect + 2)
+      throw Meshing_error("internal error: root grid too large");
+    const double far = (std::max)((std::max)(std::abs(m_ox), std::abs(m_oy)),
+                                  (std::max)(std::abs(m_ox + m_nx * m_root_side),
+                                             std::abs(m_oy + m_ny * m_root_side)));
+    if(far / finest >= 0x1p52) {
+      std::ostringstream msg;
+      msg << "the input lies too far from the origin for its size: at |x| = " << far
+          << ", cells of side " << finest << " (quadtree depth " << m_max_depth
+          << ") cannot be represented exactly; translate the input nearer to the origin "
+             "or lower the maximum depth";
+      throw Meshing_error(msg.str());
+    }
+    m_nodes = internal::Key_map(std::size_t(m_nx) * m_ny * 4);
+    m_number_of_leaves = 0;
+    m_depth = 0;
+    for(std::uint32_t j = 0; j < m_ny; ++j)
+      for(std::uint32_t i = 0; i < m_nx; ++i)
+        add_leaf(Cell_key(0, i, j));
+  }
+
+  // The index of the lattice interval [origin + i h, origin + (i+1) h) containing x, at the
+  // finest cell level; exact, and clamped into [0, n).
+  std::uint32_t lattice_index(const FT& x, double origin, std::uint32_t n) const
+  {
+    const double h = cell_side(m_max_depth);
+    const auto xi = CGAL::to_interval(x);
+    double guess = std::floor((0.5 * xi.first + 0.5 * xi.second - origin) / h);
+    std::int64_t i = std::int64_t((std::min)((std::max)(guess, 0.0), double(n - 1)));
+    while(i > 0 && x < FT(origin + double(i) * h))
+      --i;
+    while(i + 1 < std::int64_t(n) && !(x < FT(origin + double(i + 1) * h)))
+      ++i;
+    return std::uint32_t(i);
+  }
+
+  std::string depth_message(const Cell_key& k, const Point_2* p = nullptr) const
+  {
+    std::ostringstream msg;
+    msg << "the sizing asks for quadtree cells deeper than the maximum depth " << m_max_depth
+        << " (cells of side " << cell_side(m_max_depth) << ")";
+    if(p != nullptr)
+      msg << " near (" << CGAL::to_double(m_traits.compute_x_2_object()(*p)) << ", "
+          << CGAL::to_double(m_traits.compute_y_2_object()(*p)) << ")";
+    else
+      msg << " near (" << lattice_x(k.level, k.i) << ", " << lattice_y(k.level, k.j) << ")";
+    msg << "; raise the maximum depth or set a minimum size";
+    return msg.str();
+  }
+
+  static constexpr double max_aspect = 16;
+
+  GeomTraits m_traits;
+  int m_max_depth;
+  double m_root_side = 1;
+  double m_ox = 0, m_oy = 0;
+  std::uint32_t m_nx = 1, m_ny = 1;
+  internal::Key_map m_nodes;
+  std::size_t m_number_of_leaves = 0;
+  int m_depth = 0;
+  std::vector<std::vector<Cell_key>>* m_new_leaves = nullptr;
+};
+
+} // namespace Quad_mesher_2
+} // namespace CGAL
+
+#endif // CGAL_QUAD_MESHER_2_BALANCED_QUADTREE_2_H

@@ -1,0 +1,242 @@
+// Copyright (c) 2026 Quad_mesher_2 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Quad_mesher_2 developers
+
+#ifndef CGAL_QUAD_MESHER_2_IO_READ_POLY_H
+#define CGAL_QUAD_MESHER_2_IO_READ_POLY_H
+
+#include <CGAL/Quad_mesher_2/Domain_2.h>
+#include <CGAL/Quad_mesher_2/IO/read_node.h>
+
+#include <array>
+#include <cstddef>
+#include <exception>
+#include <istream>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Quad_mesher_2 {
+namespace IO {
+namespace internal {
+
+/// Reads the sections of a `.poly` file after its vertex header. If the `.poly` lists 0
+/// vertices, `node_file` (may be empty) is the `.node` file holding them.
+template <class K>
+bool read_poly_text(Text_lines& r, const std::string& node_file, Domain_2<K>& out, std::string& msg)
+{
+  Vertex_list v;
+  long long count = 0;
+  if(!read_vertex_section(r, v, count, msg)) return false;
+  if(count == 0) {
+    if(node_file.empty()) {
+      msg = r.where(v.header_line) + "the .poly file lists 0 vertices, so they are in a separate .node file; "
+                                     "read it with the file-name overload";
+      return false;
+    }
+    std::string text;
+    if(!slurp_file(node_file, text, msg)) {
+      msg = r.where(v.header_line) + "the .poly file lists 0 vertices, but its .node file cannot be read: " + msg;
+      return false;
+    }
+    Text_lines nr(std::move(text), node_file);
+    if(!read_node_text(nr, v, msg)) return false;
+  } else if(!check_duplicate_vertices(v, msg)) {
+    return false;
+  }
+  const std::size_t nv = v.xy.size();
+  const std::size_t base = v.base;
+
+  // Segments: `<#segments> [<#boundary markers (0|1)>]`, then `<index> <a> <b> [marker]`.
+  if(!r.next()) { msg = r.where(r.end_line()) + "unexpected end of file: the segment header is missing"; return false; }
+  const std::size_t seg_header_line = r.line();
+  long long nseg = 0, nmark = 0;
+  if(!read_count(r[0], nseg, r.here(), "the number of segments", msg)) return false;
+  if(r.size() > 1) {
+    if(!read_count(r[1], nmark, r.here(), "the number of segment boundary markers", msg)) return false;
+    if(nmark > 1) { msg = r.here() + "the number of segment boundary markers must be 0 or 1, found " + std::string(r[1]); return false; }
+  }
+  if(r.size() > 2) { msg = r.here() + "unexpected text " + quote(r[2]) + " after the segment header"; return false; }
+  const std::size_t ns = static_cast<std::size_t>(nseg);
+  std::vector<std::array<std::size_t, 2> > segs;
+  std::vector<std::size_t> seg_lines;
+  const std::size_t cap = r.text().size() / 6 + 1;
+  segs.reserve((std::min)(ns, cap));
+  seg_lines.reserve((std::min)(ns, cap));
+  std::size_t seg_base = 0;
+  const std::size_t max_tokens = 3 + static_cast<std::size_t>(nmark);
+  for(std::size_t i = 0; i < ns; ++i) {
+    if(!r.next()) {
+      msg = r.where(r.end_line()) + "unexpected end of file: the segment header (line " + std::to_string(seg_header_line) +
+            ") announces " + std::to_string(ns) + " segments, but only " + std::to_string(i) + " were found";
+      return false;
+    }
+    long long idx;
+    if(!parse_integer(r[0], idx)) { msg = r.here() + "expected an integer segment index, found " + quote(r[0]); return false; }
+    if(i == 0) {
+      if(idx != 0 && idx != 1) { msg = r.here() + "the first segment index must be 0 or 1, found " + std::string(r[0]); return false; }
+      seg_base = static_cast<std::size_t>(idx);
+    } else if(idx != static_cast<long long>(i + seg_base)) {
+      msg = r.here() + "segment index " + std::string(r[0]) + " out of sequence: expected " + std::to_string(i + seg_base) +
+            " (indices must be consecutive; an index was skipped or repeated)";
+      return false;
+    }
+    if(r.size() < 3) { msg = r.here() + "segment " + std::string(r[0]) + " needs two vertex indices (expected: index a b)"; return false; }
+    std::array<std::size_t, 2> s;
+    for(int e = 0; e < 2; ++e) {
+      long long a;
+      if(!parse_integer(r[1 + e], a)) {
+        msg = r.here() + "expected an integer vertex index in segment " + std::string(r[0]) + ", found " + quote(r[1 + e]);
+        return false;
+      }
+      if(a < static_cast<long long>(base) || a >= static_cast<long long>(nv + base)) {
+        msg = r.here() + "segment " + std::string(r[0]) + " refers to vertex " + std::string(r[1 + e]) + ", but there are " +
+              std::to_string(nv) + " vertices (" + base_name(base) + "): out of range";
+        return false;
+      }
+      s[e] = static_cast<std::size_t>(a) - base;
+    }
+    if(r.size() > max_tokens) {
+      msg = r.here() + "unexpected text " + quote(r[max_tokens]) + " after segment " + std::string(r[0]) + " (the header announces " +
+            std::to_string(nmark) + " marker(s))";
+      return false;
+    }
+    long long m;
+    if(r.size() == 4 && !parse_integer(r[3], m)) {
+      msg = r.here() + "expected an integer boundary marker of segment " + std::string(r[0]) + ", found " + quote(r[3]);
+      return false;
+    }
+    if(s[0] == s[1]) {
+      msg = r.here() + "segment " + std::string(r[0]) + " has zero length: both ends are vertex " + std::to_string(s[0] + base);
+      return false;
+    }
+    segs.push_back(s);
+    seg_lines.push_back(r.line());
+  }
+  std::size_t d1, d2;
+  if(find_duplicate_segment(segs, d1, d2)) {
+    msg = r.where(seg_lines[d2]) + "duplicate segment: segment " + std::to_string(d2 + seg_base) + " (line " +
+          std::to_string(seg_lines[d2]) + ") and segment " + std::to_string(d1 + seg_base) + " (line " +
+          std::to_string(seg_lines[d1]) + ") both join vertices " + std::to_string(segs[d2][0] + base) + " and " +
+          std::to_string(segs[d2][1] + base);
+    return false;
+  }
+
+  // Holes: `<#holes>`, then `<index> <x> <y>`.
+  if(!r.next()) { msg = r.where(r.end_line()) + "unexpected end of file: the hole header is missing"; return false; }
+  const std::size_t hole_header_line = r.line();
+  long long nholes = 0;
+  if(!read_count(r[0], nholes, r.here(), "the number of holes", msg)) return false;
+  if(r.size() > 1) { msg = r.here() + "unexpected text " + quote(r[1]) + " after the hole header"; return false; }
+  const std::size_t nh = static_cast<std::size_t>(nholes);
+  std::vector<std::array<double, 2> > holes;
+  holes.reserve((std::min)(nh, cap));
+  std::size_t hole_base = 0;
+  for(std::size_t i = 0; i < nh; ++i) {
+    if(!r.next()) {
+      msg = r.where(r.end_line()) + "unexpected end of file: the hole header (line " + std::to_string(hole_header_line) +
+            ") announces " + std::to_string(nh) + " holes, but only " + std::to_string(i) + " were found";
+      return false;
+    }
+    long long idx;
+    if(!parse_integer(r[0], idx)) { msg = r.here() + "expected an integer hole index, found " + quote(r[0]); return false; }
+    if(i == 0) {
+      if(idx != 0 && idx != 1) { msg = r.here() + "the first hole index must be 0 or 1, found " + std::string(r[0]); return false; }
+      hole_base = static_cast<std::size_t>(idx);
+    } else if(idx != static_cast<long long>(i + hole_base)) {
+      msg = r.here() + "hole index " + std::string(r[0]) + " out of sequence: expected " + std::to_string(i + hole_base) +
+            " (indices must be consecutive; an index was skipped or repeated)";
+      return false;
+    }
+    if(r.size() < 3) { msg = r.here() + "hole " + std::string(r[0]) + " needs two coordinates (expected: index x y)"; return false; }
+    double x, y;
+    std::string problem;
+    if(!read_coordinate(r[1], x, problem, [&]() { return "the x coordinate of hole " + std::string(r[0]); }) ||
+       !read_coordinate(r[2], y, problem, [&]() { return "the y coordinate of hole " + std::string(r[0]); })) {
+      msg = r.here() + problem;
+      return false;
+    }
+    if(r.size() > 3) { msg = r.here() + "unexpected text " + quote(r[3]) + " after hole " + std::string(r[0]); return false; }
+    holes.push_back({x, y});
+  }
+  // An optional regional-attributes section may follow; it is ignored.
+
+  append_points<K>(v.xy, out.points);
+  out.segments = std::move(segs);
+  append_points<K>(holes, out.holes);
+  return true;
+}
+
+template <class K>
+bool read_poly_impl(std::string&& text, const std::string& source, const std::string& node_file,
+                    Domain_2<K>& out, std::string* error)
+{
+  out = Domain_2<K>();
+  std::string msg;
+  try {
+    Text_lines r(std::move(text), source);
+    if(read_poly_text(r, node_file, out, msg)) return true;
+  } catch(const std::exception& e) {
+    msg = source + ": " + e.what();
+  } catch(...) {
+    msg = source + ": unknown error";
+  }
+  out = Domain_2<K>();
+  set_error(error, msg);
+  return false;
+}
+
+/// `dir/name.poly` -> `dir/name.node` (the extension is replaced, or `.node` appended).
+inline std::string node_file_beside(const std::string& poly_file)
+{
+  const std::size_t slash = poly_file.find_last_of("/\\");
+  const std::size_t dot = poly_file.find_last_of('.');
+  if(dot == std::string::npos || (slash != std::string::npos && dot < slash)) return poly_file + ".node";
+  return poly_file.substr(0, dot) + ".node";
+}
+
+} // namespace internal
+
+/// \ingroup PkgQuadMesher2IO
+/// Reads a Triangle `.poly` file from `in` into `out` (replacing its content).
+///
+/// Sections: vertices (`<#vertices> [<dimension=2> [<#attributes> [<#markers (0|1)>]]]`, then
+/// `<index> <x> <y> [attributes...] [marker]`), segments (`<#segments> [<#markers>]`, then
+/// `<index> <a> <b> [marker]`), holes (`<#holes>`, then `<index> <x> <y>`). An optional
+/// regional-attributes section after the holes is ignored. `#` starts a comment. Vertex
+/// indices are consecutive from 0 or 1: the first vertex decides, as in Triangle, and segment
+/// endpoints use the same base; segment and hole numbers are consecutive from 0 or 1 too.
+/// Missing attributes and markers default to 0 (as in Triangle); extra tokens are errors.
+/// A `.poly` listing 0 vertices takes them from the `.node` file beside it, which only the
+/// file-name overload can do.
+///
+/// Rejected with one message `SOURCE:LINE: problem` in `*error` (and `out` left empty):
+/// empty or truncated input, negative or non-integer counts, dimension other than 2,
+/// non-numeric tokens or trailing text, non-finite or too large (|v| > 1e150) coordinates,
+/// out-of-sequence vertex indices, out-of-range segment endpoints, duplicate points,
+/// zero-length segments and duplicate segments (in either direction). Never throws.
+template <class K>
+bool read_poly(std::istream& in, Domain_2<K>& out, std::string* error = nullptr,
+               const std::string& source_name = "<stream>")
+{
+  std::string text, msg;
+  if(!internal::slurp(in, text, source_name, msg)) { out = Domain_2<K>(); internal::set_error(error, msg); return false; }
+  return internal::read_poly_impl(std::move(text), source_name, std::string(), out, error);
+}
+
+/// \ingroup PkgQuadMesher2IO
+/// Reads the Triangle `.poly` file `filename` (and, if it lists 0 vertices, the `.node` file
+/// with the same stem); see the stream overload. Messages are prefixed with the file name.
+template <class K>
+bool read_poly(const std::string& filename, Domain_2<K>& out, std::string* error = nullptr)
+{
+  std::string text, msg;
+  if(!internal::slurp_file(filename, text, msg)) { out = Domain_2<K>(); internal::set_error(error, msg); return false; }
+  return internal::read_poly_impl(std::move(text), filename, internal::node_file_beside(filename), out, error);
+}
+
+} // namespace IO
+} // namespace Quad_mesher_2
+} // namespace CGAL
+
+#endif // CGAL_QUAD_MESHER_2_IO_READ_POLY_H

@@ -1,0 +1,92 @@
+// Copyright (c) 2026 Quad_mesher_2 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Quad_mesher_2 developers
+
+#ifndef CGAL_QUAD_MESHER_2_MESH_CRITERIA_2_H
+#define CGAL_QUAD_MESHER_2_MESH_CRITERIA_2_H
+
+#include <CGAL/Quad_mesher_2/Meshing_error.h>
+
+#include <CGAL/number_utils.h>
+
+#include <cmath>
+#include <functional>
+#include <string>
+
+namespace CGAL {
+namespace Quad_mesher_2 {
+
+/// \ingroup PkgQuadMesher2Ref
+/// The size criteria of the quadtree (paper §4.2). A cell is split while it is
+/// - larger than `max_size()` (if set, i.e. > 0), or
+/// - larger than the spacing `s_i = min_j d_ij` of an input point `i` it contains
+///   (if `use_point_spacing()`), or
+/// - larger than the user's sizing field at its centre or one of its corners (if set);
+///
+/// but never below `min_size()` (if set) nor deeper than `max_depth()`. A sizing that asks
+/// for cells deeper than `max_depth()` without a `min_size()` to stop it is an error
+/// (`Meshing_error`), not a silently coarser mesh.
+///
+/// \tparam GeomTraits a model of `QuadMesherTraits_2`
+template <class GeomTraits>
+class Mesh_criteria_2
+{
+public:
+  typedef typename GeomTraits::FT FT;
+  typedef typename GeomTraits::Point_2 Point_2;
+  /// a target cell side at a point; must be positive
+  typedef std::function<FT(const Point_2&)> Sizing_field;
+
+  static constexpr int default_max_depth = 20;
+
+  /// `max_size` and `min_size` of 0 mean "no bound".
+  explicit Mesh_criteria_2(double max_size = 0, double min_size = 0,
+                           int max_depth = default_max_depth)
+  {
+    set_max_size(max_size);
+    set_min_size(min_size);
+    set_max_depth(max_depth);
+  }
+
+  double max_size() const { return m_max_size; }
+  double min_size() const { return m_min_size; }
+  int max_depth() const { return m_max_depth; }
+  bool use_point_spacing() const { return m_use_point_spacing; }
+  const Sizing_field& sizing_field() const { return m_sizing_field; }
+
+  void set_max_size(double s) { check_size(s, "maximum size"); m_max_size = s; check_order(); }
+  void set_min_size(double s) { check_size(s, "minimum size"); m_min_size = s; check_order(); }
+  void set_max_depth(int d)
+  {
+    if(d < 0 || d > 24)
+      throw Meshing_error("maximum depth " + std::to_string(d) + " is outside [0, 24]");
+    m_max_depth = d;
+  }
+  void set_use_point_spacing(bool b) { m_use_point_spacing = b; }
+  void set_sizing_field(Sizing_field f) { m_sizing_field = std::move(f); }
+
+private:
+  static void check_size(double s, const char* what)
+  {
+    if(!(std::isfinite(s) && s >= 0))
+      throw Meshing_error(std::string(what) + " must be a finite number >= 0 (0 = unbounded), got "
+                          + std::to_string(s));
+  }
+  void check_order() const
+  {
+    if(m_max_size > 0 && m_min_size > 0 && m_min_size > m_max_size)
+      throw Meshing_error("minimum size " + std::to_string(m_min_size)
+                          + " exceeds maximum size " + std::to_string(m_max_size));
+  }
+
+  double m_max_size = 0;
+  double m_min_size = 0;
+  int m_max_depth = default_max_depth;
+  bool m_use_point_spacing = true;
+  Sizing_field m_sizing_field;
+};
+
+} // namespace Quad_mesher_2
+} // namespace CGAL
+
+#endif // CGAL_QUAD_MESHER_2_MESH_CRITERIA_2_H

@@ -1,0 +1,133 @@
+// Copyright (c) 2026 Quad_mesher_2 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Quad_mesher_2 developers
+
+#ifndef CGAL_QUAD_MESHER_2_INTERNAL_APPLY_TEMPLATES_H
+#define CGAL_QUAD_MESHER_2_INTERNAL_APPLY_TEMPLATES_H
+
+#include <CGAL/Quad_mesher_2/Cell_key.h>
+#include <CGAL/Quad_mesher_2/Quad_mesh_2.h>
+#include <CGAL/Quad_mesher_2/internal/Key_map.h>
+#include <CGAL/Quad_mesher_2/internal/template_table.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace CGAL {
+namespace Quad_mesher_2 {
+namespace internal {
+
+// Which 2-refinement template a leaf takes.
+//
+// The paper (§3) walks each boundary {V1..V2k} of the region of split cells at a level and
+// makes every other vertex active. We take the alternation from the lattice instead: a
+// vertex (X, Y) of the level-L lattice is active if X+Y is even and it touches a split
+// level-L cell. Consecutive boundary vertices differ by one lattice step, so this alternates
+// along every boundary loop, agrees at pinch points and needs no loop tracing. Every edge then
+// has exactly one even end, and the even corners of a cell are diagonal, so:
+//  - no active corner: the leaf stays one quad;
+//  - one active corner: the transition template, which splits the two edges at that corner;
+//  - two active corners: the refinement template, which splits all four edges.
+// An edge is split exactly when its even end is active, which both cells sharing it see, so
+// the mesh is conforming; strong balance guarantees that the split cells a leaf touches are
+// its own level's (a leaf never touches a cell two levels finer).
+struct Template_choice
+{
+  enum Kind : unsigned char { PLAIN, TRANSITION, REFINEMENT };
+  Kind kind;
+  int corner; // the active corner of a transition (0..3 as in template_table.h)
+};
+
+template <class Tree>
+bool is_active_vertex(const Tree& tree, int level, std::int64_t X, std::int64_t Y)
+{
+  if(((X + Y) & 1) != 0)
+    return false;
+  for(std::int64_t j = Y - 1; j <= Y; ++j)
+    for(std::int64_t i = X - 1; i <= X; ++i)
+      if(tree.in_grid(level, i, j)
+         && tree.is_split(Cell_key(level, std::uint32_t(i), std::uint32_t(j))))
+        return true;
+  return false;
+}
+
+template <class Tree>
+Template_choice choose_template(const Tree& tree, const Cell_key& k)
+{
+  static const int corner_dx[4] = { 0, 1, 1, 0 };
+  static const int corner_dy[4] = { 0, 0, 1, 1 };
+  int count = 0, last = -1;
+  for(int c = 0; c < 4; ++c)
+    if(is_active_vertex(tree, k.level, std::int64_t(k.i) + corner_dx[c],
+                        std::int64_t(k.j) + corner_dy[c])) {
+      ++count;
+      last = c;
+    }
+  if(count == 0)
+    return { Template_choice::PLAIN, -1 };
+  if(count == 1)
+    return { Template_choice::TRANSITION, last };
+  return { Template_choice::REFINEMENT, -1 };
+}
+
+inline const Quad_template& template_of(const Template_choice& t)
+{
+  switch(t.kind) {
+  case Template_choice::PLAIN: return plain_template();
+  case Template_choice::TRANSITION: return transition_template(t.corner);
+  default: return refinement_template();
+  }
+}
+
+// The conforming all-quad mesh of a strongly balanced tree: every leaf replaced by its
+// template. Vertices are deduplicated by their integer key on the finest lattice, never by
+// comparing coordinates. If `quad_cells` is given, it receives the leaf of each quad.
+template <class Tree>
+Quad_mesh_2<typename Tree::Point_2>
+templated_mesh(const Tree& tree, std::vector<Cell_key>* quad_cells = nullptr)
+{
+  CGAL_precondition(tree.is_strongly_balanced());
+  typedef typename Tree::Point_2 Point_2;
+  Quad_mesh_2<Point_2> mesh;
+  const int vertex_level = tree.vertex_level();
+  Key_map vertex_index(tree.number_of_leaves() * 3 / 2);
+  mesh.quads.reserve(tree.number_of_leaves() * 3 / 2);
+  std::vector<std::uint64_t> vertex_keys;
+  vertex_keys.reserve(tree.number_of_leaves() * 3 / 2);
+  if(quad_cells != nullptr)
+    quad_cells->clear();
+
+  tree.for_each_leaf([&](const Cell_key& k) {
+    const Quad_template& t = template_of(choose_template(tree, k));
+    const int shift = vertex_level - k.level - 1; // local half-cell units -> vertex lattice
+    const std::uint64_t x0 = std::uint64_t(k.i) << (shift + 1);
+    const std::uint64_t y0 = std::uint64_t(k.j) << (shift + 1);
+    for(std::size_t q = 0; q < t.size; ++q) {
+      typename Quad_mesh_2<Point_2>::Quad quad;
+      for(int c = 0; c < 4; ++c) {
+        const Local_vertex& v = t.quads[q][c];
+        const std::uint64_t key = ((x0 + (std::uint64_t(v.x) << shift)) << 32)
+                                  | (y0 + (std::uint64_t(v.y) << shift));
+        auto inserted = vertex_index.insert(key, std::uint32_t(vertex_keys.size()));
+        if(inserted.second)
+          vertex_keys.push_back(key);
+        quad[c] = *inserted.first;
+      }
+      mesh.quads.push_back(quad);
+      if(quad_cells != nullptr)
+        quad_cells->push_back(k);
+    }
+  });
+
+  mesh.points.reserve(vertex_keys.size());
+  for(std::uint64_t key : vertex_keys)
+    mesh.points.push_back(tree.lattice_point(vertex_level, std::int64_t(key >> 32),
+                                             std::int64_t(key & 0xffffffffu)));
+  return mesh;
+}
+
+} // namespace internal
+} // namespace Quad_mesher_2
+} // namespace CGAL
+
+#endif // CGAL_QUAD_MESHER_2_INTERNAL_APPLY_TEMPLATES_H

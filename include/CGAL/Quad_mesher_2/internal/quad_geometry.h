@@ -1,0 +1,130 @@
+// Copyright (c) 2026 Quad_mesher_2 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Quad_mesher_2 developers
+//
+// Small double-precision helpers for the shape of one quadrilateral: corner angles, scaled
+// Jacobians, edge lengths. Quality measures are computed in `double` by design (see
+// STYLE.md, "Exactness"); no topological decision is taken here.
+
+#ifndef CGAL_QUAD_MESHER_2_INTERNAL_QUAD_GEOMETRY_H
+#define CGAL_QUAD_MESHER_2_INTERNAL_QUAD_GEOMETRY_H
+
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace CGAL {
+namespace Quad_mesher_2 {
+namespace internal {
+
+/// A point (or vector) in double precision.
+struct Point_2d
+{
+  double x;
+  double y;
+};
+
+template <class Point_2>
+inline Point_2d to_point_2d(const Point_2& p)
+{
+  return Point_2d{CGAL::to_double(p.x()), CGAL::to_double(p.y())};
+}
+
+inline double cross_2d(const Point_2d& a, const Point_2d& b) { return a.x * b.y - a.y * b.x; }
+inline double dot_2d(const Point_2d& a, const Point_2d& b) { return a.x * b.x + a.y * b.y; }
+inline Point_2d minus_2d(const Point_2d& a, const Point_2d& b) { return Point_2d{a.x - b.x, a.y - b.y}; }
+inline double length_2d(const Point_2d& a) { return std::hypot(a.x, a.y); }
+
+/// Interior angle in degrees, in [0, 360), at corner `p` of a counter-clockwise polygon whose
+/// previous and next vertices are `prev` and `next`: the angle swept counter-clockwise from
+/// `next - p` to `prev - p`. Convex corners give (0, 180), reflex corners (180, 360).
+/// Returns 0 if one of the two edges has zero length.
+inline double corner_angle_degrees(const Point_2d& prev, const Point_2d& p, const Point_2d& next)
+{
+  const Point_2d e_next = minus_2d(next, p);
+  const Point_2d e_prev = minus_2d(prev, p);
+  double a = std::atan2(cross_2d(e_next, e_prev), dot_2d(e_next, e_prev)) * (180.0 / 3.14159265358979323846);
+  if(a < 0)
+    a += 360.0;
+  if(a >= 360.0)
+    a = 0.0;
+  return a;
+}
+
+/// Scaled Jacobian at corner `p` of a counter-clockwise polygon:
+/// cross(e_next, e_prev) / (|e_next| |e_prev|), the sine of the corner angle, in [-1, 1].
+/// Returns 0 if one of the two edges has zero length.
+inline double corner_scaled_jacobian(const Point_2d& prev, const Point_2d& p, const Point_2d& next)
+{
+  const Point_2d e_next = minus_2d(next, p);
+  const Point_2d e_prev = minus_2d(prev, p);
+  const double l = length_2d(e_next) * length_2d(e_prev);
+  if(!(l > 0))
+    return 0.0;
+  double s = cross_2d(e_next, e_prev) / l;
+  return (std::max)(-1.0, (std::min)(1.0, s));
+}
+
+/// The four interior angles (degrees) of the quad `q`, listed counter-clockwise.
+inline std::array<double, 4> quad_corner_angles(const std::array<Point_2d, 4>& q)
+{
+  std::array<double, 4> a;
+  for(int k = 0; k < 4; ++k)
+    a[k] = corner_angle_degrees(q[(k + 3) % 4], q[k], q[(k + 1) % 4]);
+  return a;
+}
+
+/// The four corner scaled Jacobians of the quad `q`.
+inline std::array<double, 4> quad_corner_scaled_jacobians(const std::array<Point_2d, 4>& q)
+{
+  std::array<double, 4> s;
+  for(int k = 0; k < 4; ++k)
+    s[k] = corner_scaled_jacobian(q[(k + 3) % 4], q[k], q[(k + 1) % 4]);
+  return s;
+}
+
+/// The scaled Jacobian of a quad: the minimum over its four corners.
+inline double quad_scaled_jacobian(const std::array<Point_2d, 4>& q)
+{
+  const std::array<double, 4> s = quad_corner_scaled_jacobians(q);
+  return (std::min)((std::min)(s[0], s[1]), (std::min)(s[2], s[3]));
+}
+
+/// The largest deviation |angle - 90| (degrees) over the four corners of `q`.
+inline double quad_max_angle_deviation(const std::array<Point_2d, 4>& q)
+{
+  const std::array<double, 4> a = quad_corner_angles(q);
+  double d = 0;
+  for(double x : a)
+    d = (std::max)(d, std::abs(x - 90.0));
+  return d;
+}
+
+/// Edge lengths of `q`: entry k is the length of edge (q[k], q[k+1]).
+inline std::array<double, 4> quad_edge_lengths(const std::array<Point_2d, 4>& q)
+{
+  std::array<double, 4> l;
+  for(int k = 0; k < 4; ++k)
+    l[k] = length_2d(minus_2d(q[(k + 1) % 4], q[k]));
+  return l;
+}
+
+/// Longest over shortest edge of `q`; +infinity if some edge has zero length.
+inline double quad_aspect_ratio(const std::array<Point_2d, 4>& q)
+{
+  const std::array<double, 4> l = quad_edge_lengths(q);
+  const double lo = (std::min)((std::min)(l[0], l[1]), (std::min)(l[2], l[3]));
+  const double hi = (std::max)((std::max)(l[0], l[1]), (std::max)(l[2], l[3]));
+  if(!(lo > 0))
+    return std::numeric_limits<double>::infinity();
+  return hi / lo;
+}
+
+} // namespace internal
+} // namespace Quad_mesher_2
+} // namespace CGAL
+
+#endif // CGAL_QUAD_MESHER_2_INTERNAL_QUAD_GEOMETRY_H

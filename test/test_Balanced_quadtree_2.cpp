@@ -1,0 +1,311 @@
+// Copyright (c) 2026 Quad_mesher_2 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Quad_mesher_2 developers
+//
+// The strongly balanced quadtree and its 2-refinement templates.
+
+#include "qm2_mesh_checks.h"
+#include "qm2_test_kernel.h"
+
+#include <CGAL/Quad_mesher_2/Balanced_quadtree_2.h>
+#include <CGAL/Quad_mesher_2/internal/apply_templates.h>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <random>
+#include <set>
+
+namespace qm2_test_quadtree {
+
+using qm2_test::K;
+using Tree = CGAL::Quad_mesher_2::Balanced_quadtree_2<K>;
+using CGAL::Quad_mesher_2::Cell_key;
+using CGAL::Quad_mesher_2::internal::Template_choice;
+
+Tree unit_tree(int max_depth = 8)
+{
+  // [0,1]^2 gets a root square of side 2 anchored at the origin.
+  return Tree(K::Iso_rectangle_2(K::Point_2(0, 0), K::Point_2(1, 1)), max_depth);
+}
+
+void refine_uniformly(Tree& t, int level)
+{
+  t.refine([&](const Cell_key& k) { return k.level < level; });
+}
+
+// Brute force: every pair of leaves that share an edge or a corner differ by <= 1 level.
+::testing::AssertionResult brute_force_balanced(const Tree& t)
+{
+  std::vector<Cell_key> leaves = t.leaves();
+  const int top = t.max_depth();
+  for(std::size_t a = 0; a < leaves.size(); ++a)
+    for(std::size_t b = a + 1; b < leaves.size(); ++b) {
+      const Cell_key &p = leaves[a], &q = leaves[b];
+      // integer boxes on the finest lattice
+      long long px0 = (long long)p.i << (top - p.level), px1 = (long long)(p.i + 1) << (top - p.level);
+      long long py0 = (long long)p.j << (top - p.level), py1 = (long long)(p.j + 1) << (top - p.level);
+      long long qx0 = (long long)q.i << (top - q.level), qx1 = (long long)(q.i + 1) << (top - q.level);
+      long long qy0 = (long long)q.j << (top - q.level), qy1 = (long long)(q.j + 1) << (top - q.level);
+      bool touch = px0 <= qx1 && qx0 <= px1 && py0 <= qy1 && qy0 <= py1;
+      if(touch && std::abs(p.level - q.level) > 1)
+        return ::testing::AssertionFailure() << "leaves at levels " << p.level << " and " << q.level << " touch";
+    }
+  return ::testing::AssertionSuccess();
+}
+
+TEST(Balanced_quadtree_2, root_grid_is_dyadic_and_covers_input)
+{
+  Tree t(K::Iso_rectangle_2(K::Point_2(0.3, -0.7), K::Point_2(0.9, -0.3)), 10);
+  EXPECT_EQ(t.root_side(), 0.5); // the smallest power of two >= 0.4, the shorter side
+  EXPECT_LE(t.origin_x(), 0.3);
+  EXPECT_LE(t.origin_y(), -0.7);
+  EXPECT_GT(t.origin_x() + t.root_cells_x() * t.root_side(), 0.9);
+  EXPECT_GT(t.origin_y() + t.root_cells_y() * t.root_side(), -0.3);
+  double finest = std::ldexp(t.root_side(), -11);
+  EXPECT_EQ(std::fmod(t.origin_x(), finest), 0.0);
+  EXPECT_EQ(t.number_of_leaves(), std::size_t(t.root_cells_x() * t.root_cells_y()));
+}
+
+TEST(Balanced_quadtree_2, thin_input_gets_a_row_of_square_cells)
+{
+  Tree t(K::Iso_rectangle_2(K::Point_2(0, 0), K::Point_2(100, 1)), 10);
+  EXPECT_GE(t.root_cells_x(), 7u);
+  EXPECT_EQ(t.root_cells_y(), 1u);
+  EXPECT_GE(t.root_side() * t.root_cells_x(), 100.0);
+}
+
+TEST(Balanced_quadtree_2, locate_is_exact_on_lattice_lines)
+{
+  Tree t = unit_tree(6);
+  refine_uniformly(t, 3); // side 2 / 8 = 0.25
+  // A point on a vertical lattice line belongs to the cell on its right (half-open cells).
+  Cell_key k = t.locate(K::Point_2(0.25, 0.1));
+  EXPECT_EQ(k, Cell_key(3, 1, 0));
+  k = t.locate(K::Point_2(std::nextafter(0.25, 0.0), 0.1));
+  EXPECT_EQ(k, Cell_key(3, 0, 0));
+  k = t.locate(K::Point_2(0.5, 0.75));
+  EXPECT_EQ(k, Cell_key(3, 2, 3));
+}
+
+TEST(Balanced_quadtree_2, refine_at_reaches_requested_level)
+{
+  Tree t = unit_tree(12);
+  K::Point_2 p(0.123456789, 0.987654321);
+  t.refine_at(p, 9);
+  Cell_key k = t.locate(p);
+  EXPECT_EQ(k.level, 9);
+  K::Iso_rectangle_2 r = t.cell_rectangle(k);
+  EXPECT_NE(r.bounded_side(p), CGAL::ON_UNBOUNDED_SIDE);
+}
+
+TEST(Balanced_quadtree_2, depth_guard_raises_a_clear_error)
+{
+  Tree t = unit_tree(5);
+  try {
+    t.refine_at(K::Point_2(0.5, 0.5), 6);
+    FAIL() << "no error";
+  } catch(const CGAL::Quad_mesher_2::Meshing_error& e) {
+    EXPECT_NE(std::string(e.what()).find("maximum depth 5"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(t.refine([](const Cell_key&) { return true; }), CGAL::Quad_mesher_2::Meshing_error);
+  EXPECT_THROW(Tree(K::Iso_rectangle_2(K::Point_2(0, 0), K::Point_2(1, 1)), 99),
+               CGAL::Quad_mesher_2::Meshing_error);
+}
+
+TEST(Balanced_quadtree_2, far_from_origin_and_too_deep_is_an_error)
+{
+  // 1e-4 across at 1e5 from the origin: 24 levels cannot be represented in doubles.
+  K::Iso_rectangle_2 box(K::Point_2(1e5, 1e5), K::Point_2(1e5 + 1e-4, 1e5 + 1e-4));
+  EXPECT_THROW(Tree(box, 24), CGAL::Quad_mesher_2::Meshing_error);
+  Tree ok(box, 12); // but 12 levels can
+  EXPECT_EQ(ok.number_of_leaves(), std::size_t(ok.root_cells_x() * ok.root_cells_y()));
+}
+
+TEST(Balanced_quadtree_2, balance_random_trees)
+{
+  std::mt19937 rng(7);
+  for(int trial = 0; trial < 30; ++trial) {
+    Tree t = unit_tree(9);
+    std::uniform_real_distribution<double> u(0, 2);
+    std::uniform_int_distribution<int> lv(1, 9);
+    int n = 1 + trial % 6;
+    for(int p = 0; p < n; ++p)
+      t.refine_at(K::Point_2(u(rng), u(rng)), lv(rng));
+    t.balance();
+    ASSERT_TRUE(t.is_strongly_balanced());
+    if(t.number_of_leaves() < 2500) {
+      ASSERT_TRUE(brute_force_balanced(t));
+    }
+    auto mesh = CGAL::Quad_mesher_2::internal::templated_mesh(t);
+    ASSERT_TRUE(qm2_checks::tiles_rectangle(mesh, 0, 0, 2, 2));
+    auto range = qm2_checks::angle_range(mesh);
+    EXPECT_GE(range.min, 45 - 1e-9);
+    EXPECT_LE(range.max, 135 + 1e-9);
+  }
+}
+
+TEST(Balanced_quadtree_2, balance_splits_corner_neighbours)
+{
+  // CGAL's Orthtree::grade() only looks across faces; a deep leaf touching a coarse leaf at a
+  // corner only must be balanced too.
+  Tree t = unit_tree(6);
+  refine_uniformly(t, 1);
+  t.refine_at(K::Point_2(0.999, 0.999), 4); // deep in the lower-left root quarter's corner
+  EXPECT_FALSE(t.is_strongly_balanced());
+  t.balance();
+  EXPECT_TRUE(t.is_strongly_balanced());
+  EXPECT_TRUE(brute_force_balanced(t));
+  // the diagonal neighbour (upper-right quarter) had to be split
+  EXPECT_TRUE(t.is_split(Cell_key(1, 1, 1)));
+}
+
+TEST(Balanced_quadtree_2, balance_does_not_change_a_balanced_tree)
+{
+  Tree t = unit_tree(6);
+  refine_uniformly(t, 3);
+  t.refine_at(K::Point_2(1, 1), 4);
+  ASSERT_TRUE(t.is_strongly_balanced());
+  std::size_t before = t.number_of_leaves();
+  t.balance();
+  EXPECT_EQ(t.number_of_leaves(), before);
+}
+
+// Every neighbour configuration of a leaf C at level 3: each of its 8 neighbours is a coarser
+// leaf (level 2), a leaf of its level, or split (level 4), for C in each of the 4 child
+// positions of its parent (which also covers both lattice parities). Admissible configurations
+// are those that are already strongly balanced; for each one the templated mesh must be
+// conforming with angles in {45, 90, 135} and C must take the template the parity rule names.
+TEST(Balanced_quadtree_2, templates_exhaustive_neighbour_configurations)
+{
+  const int dirs[8][2] = { { -1, -1 }, { 0, -1 }, { 1, -1 }, { -1, 0 }, { 1, 0 }, { -1, 1 }, { 0, 1 }, { 1, 1 } };
+  std::set<std::pair<int, int>> templates_seen; // (kind, corner)
+  int admissible = 0, total = 0;
+  const int stride = qm2_test::exact_constructions ? 3 : 1; // Epeck points are slower to build
+  for(int pos = 0; pos < 4; ++pos) {
+    const std::uint32_t ci = 3 + (pos & 1), cj = 3 + (pos >> 1);
+    for(int code = 0; code < 6561; code += stride) {
+      int state[8];
+      for(int d = 0, c = code; d < 8; ++d, c /= 3)
+        state[d] = c % 3 - 1;
+      ++total;
+      // level-2 cells that must stay leaves (hold a coarse neighbour) or be split
+      std::map<std::pair<std::uint32_t, std::uint32_t>, int> parent_state;
+      bool consistent = true;
+      auto want = [&](std::uint32_t i, std::uint32_t j, int s) {
+        auto key = std::make_pair(i >> 1, j >> 1);
+        int need = s < 0 ? -1 : 1;
+        auto it = parent_state.find(key);
+        if(it == parent_state.end())
+          parent_state[key] = need;
+        else if(it->second != need)
+          consistent = false;
+      };
+      want(ci, cj, 0);
+      for(int d = 0; d < 8; ++d)
+        want(ci + dirs[d][0], cj + dirs[d][1], state[d]);
+      if(!consistent)
+        continue;
+      Tree t = unit_tree(6);
+      refine_uniformly(t, 2);
+      for(std::uint32_t j = 0; j < 4; ++j)
+        for(std::uint32_t i = 0; i < 4; ++i) {
+          auto it = parent_state.find({ i, j });
+          if(it == parent_state.end() || it->second > 0)
+            t.split(Cell_key(2, i, j));
+        }
+      for(int d = 0; d < 8; ++d)
+        if(state[d] > 0)
+          t.split(Cell_key(3, ci + dirs[d][0], cj + dirs[d][1]));
+      if(!t.is_strongly_balanced())
+        continue;
+      ++admissible;
+      Template_choice choice = CGAL::Quad_mesher_2::internal::choose_template(t, Cell_key(3, ci, cj));
+      // expected by the parity rule: C's even corners touching a split level-3 neighbour
+      int expected_active = 0, expected_corner = -1;
+      const int cdx[4] = { 0, 1, 1, 0 }, cdy[4] = { 0, 0, 1, 1 };
+      for(int c = 0; c < 4; ++c) {
+        if(((ci + cdx[c] + cj + cdy[c]) & 1) != 0)
+          continue;
+        bool touches = false;
+        for(int d = 0; d < 8; ++d) {
+          int ni = int(ci) + dirs[d][0], nj = int(cj) + dirs[d][1];
+          int vx = int(ci) + cdx[c], vy = int(cj) + cdy[c];
+          if(state[d] > 0 && vx >= ni && vx <= ni + 1 && vy >= nj && vy <= nj + 1)
+            touches = true;
+        }
+        if(touches) {
+          ++expected_active;
+          expected_corner = c;
+        }
+      }
+      ASSERT_EQ(int(choice.kind), expected_active) << "pos " << pos << " code " << code;
+      if(expected_active == 1) {
+        ASSERT_EQ(choice.corner, expected_corner);
+      }
+      templates_seen.insert({ int(choice.kind), choice.corner });
+      auto mesh = CGAL::Quad_mesher_2::internal::templated_mesh(t);
+      ASSERT_TRUE(qm2_checks::tiles_rectangle(mesh, 0, 0, 2, 2)) << "pos " << pos << " code " << code;
+      auto range = qm2_checks::angle_range(mesh);
+      ASSERT_GE(range.min, 45 - 1e-9);
+      ASSERT_LE(range.max, 135 + 1e-9);
+    }
+  }
+  EXPECT_GT(admissible, 100);
+  EXPECT_LT(admissible, total);
+  // plain, the four transitions and refinement all occur
+  EXPECT_EQ(templates_seen.size(), 6u);
+}
+
+// Subsets of the 16 level-2 cells split (every 7th of the 2^16, which visits every cell
+// split and unsplit in all parities), then balanced: the templated mesh tiles the root square
+// without hanging nodes.
+TEST(Balanced_quadtree_2, templates_split_patterns_of_a_4x4_grid)
+{
+  const int stride = qm2_test::exact_constructions ? 31 : 7;
+  for(int mask = 0; mask < (1 << 16); mask += stride) {
+    Tree t = unit_tree(6);
+    refine_uniformly(t, 2);
+    for(int b = 0; b < 16; ++b)
+      if(mask & (1 << b))
+        t.split(Cell_key(2, b % 4, b / 4));
+    // one deeper cell, so that transitions also occur at level 3
+    if(mask & 1)
+      t.split(Cell_key(3, 1, 1));
+    t.balance();
+    ASSERT_TRUE(t.is_strongly_balanced());
+    auto mesh = CGAL::Quad_mesher_2::internal::templated_mesh(t);
+    ASSERT_TRUE(qm2_checks::tiles_rectangle(mesh, 0, 0, 2, 2)) << "mask " << mask;
+    auto range = qm2_checks::angle_range(mesh);
+    ASSERT_GE(range.min, 45 - 1e-9);
+    ASSERT_LE(range.max, 135 + 1e-9);
+  }
+}
+
+TEST(Balanced_quadtree_2, uniform_tree_gives_a_grid)
+{
+  Tree t = unit_tree(6);
+  refine_uniformly(t, 3);
+  t.balance();
+  auto mesh = CGAL::Quad_mesher_2::internal::templated_mesh(t);
+  EXPECT_EQ(mesh.quads.size(), 64u);
+  EXPECT_EQ(mesh.points.size(), 81u);
+  auto range = qm2_checks::angle_range(mesh);
+  EXPECT_NEAR(range.min, 90, 1e-9);
+  EXPECT_NEAR(range.max, 90, 1e-9);
+}
+
+TEST(Balanced_quadtree_2, scaling_by_powers_of_two_keeps_the_topology)
+{
+  auto build = [](double scale, double shift) {
+    Tree t(K::Iso_rectangle_2(K::Point_2(shift, shift), K::Point_2(shift + scale, shift + 0.5 * scale)), 10);
+    t.refine_at(K::Point_2(shift + 0.3 * scale, shift + 0.2 * scale), 7);
+    t.balance();
+    return t.leaves();
+  };
+  auto reference = build(1, 0);
+  EXPECT_EQ(build(std::ldexp(1, 20), 0), reference);
+  EXPECT_EQ(build(std::ldexp(1, -20), 0), reference);
+}
+
+} // namespace qm2_test_quadtree
