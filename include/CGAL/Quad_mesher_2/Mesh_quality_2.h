@@ -116,8 +116,6 @@ struct Quality_edge_entry
 class Quality_edge_table
 {
 public:
-  static constexpr std::size_t npos = (std::numeric_limits<std::size_t>::max)();
-
   Quality_edge_table(const std::vector<std::array<std::size_t, 4>>& quads,
                      const std::vector<char>& skip_quad,
                      std::size_t number_of_points)
@@ -163,19 +161,6 @@ public:
 
   std::size_t source(std::size_t h) const { return m_quads[h / 4][h % 4]; }
   std::size_t target(std::size_t h) const { return m_quads[h / 4][(h % 4 + 1) % 4]; }
-
-  /// Some halfedge from `a` to `b`, or `npos`.
-  std::size_t find_halfedge(std::size_t a, std::size_t b) const
-  {
-    if(a == b)
-      return npos;
-    const std::size_t lo = (std::min)(a, b), hi = (std::max)(a, b);
-    const std::size_t fwd = a < b ? 1 : 0;
-    for(std::size_t i = m_offsets[lo]; i < m_offsets[lo + 1]; ++i)
-      if(m_entries[i].other == hi && (m_entries[i].code & 1) == fwd)
-        return m_entries[i].code / 2;
-    return npos;
-  }
 
 private:
   const std::vector<std::array<std::size_t, 4>>& m_quads;
@@ -454,21 +439,27 @@ Mesh_quality_2 compute_quality(const Quad_mesh_2<Point_2>& mesh)
         out[fill[table.source(h)]++] = h;
     }
     std::vector<char> visited(4 * nq, 0);
-    const std::size_t npos = internal::Quality_edge_table::npos;
-    // The boundary halfedge leaving target(h) in the same fan of quads as `h`.
+    const std::size_t npos = (std::numeric_limits<std::size_t>::max)();
+    // At a vertex where several boundary loops meet, leave through the outgoing boundary
+    // halfedge met first when turning counter-clockwise from the incoming one's reverse:
+    // the outside lies on the right of both.
     auto turn = [&](std::size_t h) -> std::size_t {
       const std::size_t v = table.target(h);
-      for(std::size_t guard = 0; guard < 4096; ++guard) { // bounded: a fan, or give up
-        const std::size_t o = 4 * (h / 4) + (h % 4 + 1) % 4; // v -> next vertex in the quad
-        if(table.source(o) != v)
-          return npos;
-        if(is_boundary[o])
-          return o;
-        h = table.find_halfedge(table.target(o), v);
-        if(h == npos)
-          return npos;
+      const Point_2d back = internal::minus_2d(pts[table.source(h)], pts[v]);
+      std::size_t best = npos;
+      double best_angle = 0;
+      for(std::size_t i = out_offsets[v]; i < out_offsets[v + 1]; ++i) {
+        const std::size_t o = out[i];
+        const Point_2d d = internal::minus_2d(pts[table.target(o)], pts[v]);
+        double a = std::atan2(internal::cross_2d(back, d), internal::dot_2d(back, d));
+        if(a <= 0)
+          a += 2 * 3.14159265358979323846;
+        if(best == npos || a < best_angle) {
+          best = o;
+          best_angle = a;
+        }
       }
-      return npos;
+      return best;
     };
     for(std::size_t start : boundary) {
       if(visited[start])
@@ -483,13 +474,6 @@ Mesh_quality_2 compute_quality(const Quad_mesh_2<Point_2>& mesh)
           next = out[out_offsets[v]];
         } else {
           next = turn(h);
-          if(next == npos) {
-            for(std::size_t i = out_offsets[v]; i < out_offsets[v + 1]; ++i)
-              if(!visited[out[i]]) {
-                next = out[i];
-                break;
-              }
-          }
         }
         if(next == npos || visited[next])
           break;

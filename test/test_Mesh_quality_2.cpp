@@ -1,0 +1,303 @@
+// Copyright (c) 2026 Quad_mesher_2 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Quad_mesher_2 developers
+//
+// Tests for CGAL/Quad_mesher_2/Mesh_quality_2.h on small hand-built meshes.
+
+#include <CGAL/Quad_mesher_2/Mesh_quality_2.h>
+#include <CGAL/Quad_mesher_2/Quad_mesh_2.h>
+
+#include "qm2_test_kernel.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstddef>
+#include <numeric>
+#include <vector>
+
+namespace qm2_test_quality {
+
+using Point = qm2_test::Point_2;
+using Mesh = CGAL::Quad_mesher_2::Quad_mesh_2<Point>;
+using CGAL::Quad_mesher_2::compute_quality;
+using CGAL::Quad_mesher_2::Mesh_quality_2;
+
+inline Mesh make_mesh(const std::vector<std::pair<double, double>>& xy,
+                      const std::vector<std::array<std::size_t, 4>>& quads)
+{
+  Mesh m;
+  for(const auto& p : xy)
+    m.points.push_back(Point(p.first, p.second));
+  m.quads = quads;
+  return m;
+}
+
+/// An nx-by-ny grid of unit squares, with optionally the cells listed in `holes` removed
+/// (unused vertices are kept).
+inline Mesh make_grid(std::size_t nx, std::size_t ny,
+                      const std::vector<std::pair<std::size_t, std::size_t>>& holes = {})
+{
+  Mesh m;
+  for(std::size_t j = 0; j <= ny; ++j)
+    for(std::size_t i = 0; i <= nx; ++i)
+      m.points.push_back(Point(double(i), double(j)));
+  auto id = [nx](std::size_t i, std::size_t j) { return j * (nx + 1) + i; };
+  for(std::size_t j = 0; j < ny; ++j)
+    for(std::size_t i = 0; i < nx; ++i) {
+      bool hole = false;
+      for(const auto& h : holes)
+        hole = hole || (h.first == i && h.second == j);
+      if(!hole)
+        m.quads.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return m;
+}
+
+inline std::size_t histogram_sum(const Mesh_quality_2& q)
+{
+  return std::accumulate(q.angle_histogram.begin(), q.angle_histogram.end(), std::size_t(0));
+}
+
+} // namespace qm2_test_quality
+
+TEST(MeshQuality2, UnitSquareIsPerfect)
+{
+  using namespace qm2_test_quality;
+  const Mesh m = make_mesh({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, {{0, 1, 2, 3}});
+  const Mesh_quality_2 q = compute_quality(m);
+  EXPECT_EQ(q.number_of_quads, 1u);
+  EXPECT_EQ(q.number_of_vertices, 4u);
+  EXPECT_NEAR(q.min_angle, 90.0, 1e-9);
+  EXPECT_NEAR(q.max_angle, 90.0, 1e-9);
+  EXPECT_NEAR(q.mean_angle, 90.0, 1e-9);
+  EXPECT_EQ(q.angle_histogram[18], 4u);
+  EXPECT_EQ(histogram_sum(q), 4u);
+  EXPECT_DOUBLE_EQ(q.share_in_45_135, 1.0);
+  EXPECT_DOUBLE_EQ(q.share_in_60_120, 1.0);
+  EXPECT_DOUBLE_EQ(q.min_aspect_ratio, 1.0);
+  EXPECT_DOUBLE_EQ(q.max_aspect_ratio, 1.0);
+  EXPECT_DOUBLE_EQ(q.mean_aspect_ratio, 1.0);
+  EXPECT_NEAR(q.min_scaled_jacobian, 1.0, 1e-12);
+  EXPECT_NEAR(q.mean_scaled_jacobian, 1.0, 1e-12);
+  EXPECT_EQ(q.number_of_inverted_quads, 0u);
+  EXPECT_EQ(q.number_of_degenerate_quads, 0u);
+  EXPECT_EQ(q.number_of_non_manifold_edges, 0u);
+  EXPECT_EQ(q.number_of_hanging_nodes, 0u);
+  EXPECT_EQ(q.number_of_duplicate_vertices, 0u);
+  EXPECT_EQ(q.number_of_unused_vertices, 0u);
+  EXPECT_EQ(q.number_of_boundary_loops, 1u);
+  EXPECT_TRUE(q.is_valid());
+}
+
+TEST(MeshQuality2, RectangleAspectRatio)
+{
+  using namespace qm2_test_quality;
+  const Mesh m = make_mesh({{0, 0}, {2, 0}, {2, 1}, {0, 1}}, {{0, 1, 2, 3}});
+  const Mesh_quality_2 q = compute_quality(m);
+  EXPECT_DOUBLE_EQ(q.max_aspect_ratio, 2.0);
+  EXPECT_NEAR(q.min_scaled_jacobian, 1.0, 1e-12);
+  EXPECT_TRUE(q.is_valid());
+}
+
+TEST(MeshQuality2, Kite45And135)
+{
+  using namespace qm2_test_quality;
+  const double c = std::sqrt(0.5);
+  // A rhombus (a kite with equal sides): 45, 135, 45, 135 degrees.
+  const Mesh m = make_mesh({{0, 0}, {1, 0}, {1 + c, c}, {c, c}}, {{0, 1, 2, 3}});
+  const Mesh_quality_2 q = compute_quality(m);
+  EXPECT_NEAR(q.min_angle, 45.0, 1e-9);
+  EXPECT_NEAR(q.max_angle, 135.0, 1e-9);
+  EXPECT_NEAR(q.mean_angle, 90.0, 1e-9);
+  EXPECT_EQ(q.angle_histogram[9], 2u);  // [45, 50)
+  EXPECT_EQ(q.angle_histogram[27], 2u); // [135, 140)
+  EXPECT_EQ(histogram_sum(q), 4u);
+  EXPECT_DOUBLE_EQ(q.share_in_45_135, 1.0);
+  EXPECT_DOUBLE_EQ(q.share_in_60_120, 0.0);
+  EXPECT_NEAR(q.min_scaled_jacobian, c, 1e-9);
+  EXPECT_EQ(q.number_of_inverted_quads, 0u);
+  EXPECT_TRUE(q.is_valid());
+}
+
+TEST(MeshQuality2, NonConvexQuadIsInverted)
+{
+  using namespace qm2_test_quality;
+  // A dart: reflex corner of 270 degrees at (1,1).
+  const Mesh m = make_mesh({{0, 0}, {2, 1}, {0, 2}, {1, 1}}, {{0, 1, 2, 3}});
+  const Mesh_quality_2 q = compute_quality(m);
+  EXPECT_NEAR(q.max_angle, 270.0, 1e-9);
+  EXPECT_NEAR(q.mean_angle, 90.0, 1e-9);
+  EXPECT_EQ(q.angle_histogram[54], 1u); // [270, 275)
+  EXPECT_LT(q.min_scaled_jacobian, 0.0);
+  EXPECT_EQ(q.number_of_inverted_quads, 1u);
+  EXPECT_EQ(q.number_of_degenerate_quads, 0u);
+  EXPECT_DOUBLE_EQ(q.share_in_45_135, 0.25); // 18.4, 53.1, 18.4, 270
+  EXPECT_FALSE(q.is_valid());
+}
+
+TEST(MeshQuality2, FlippedQuadIsInverted)
+{
+  using namespace qm2_test_quality;
+  const Mesh m = make_mesh({{0, 0}, {0, 1}, {1, 1}, {1, 0}}, {{0, 1, 2, 3}}); // clockwise
+  const Mesh_quality_2 q = compute_quality(m);
+  EXPECT_EQ(q.number_of_inverted_quads, 1u);
+  EXPECT_NEAR(q.min_angle, 270.0, 1e-9);
+  EXPECT_NEAR(q.min_scaled_jacobian, -1.0, 1e-12);
+  EXPECT_FALSE(q.is_valid());
+}
+
+TEST(MeshQuality2, BowTieIsInverted)
+{
+  using namespace qm2_test_quality;
+  const Mesh m = make_mesh({{0, 0}, {1, 0}, {0, 1}, {1, 1}}, {{0, 1, 2, 3}});
+  const Mesh_quality_2 q = compute_quality(m);
+  EXPECT_EQ(q.number_of_inverted_quads, 1u);
+  EXPECT_EQ(q.number_of_degenerate_quads, 0u);
+  EXPECT_NEAR(q.min_angle, 45.0, 1e-9);
+  EXPECT_NEAR(q.max_angle, 315.0, 1e-9);
+  EXPECT_FALSE(q.is_valid());
+}
+
+TEST(MeshQuality2, DegenerateQuads)
+{
+  using namespace qm2_test_quality;
+  // Repeated index; zero-length edge (two distinct but equal points); collinear corner.
+  const Mesh m = make_mesh({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {1, 1}, {2, 0}, {3, 0}, {3, 1}},
+                           {{0, 1, 2, 2}, {1, 5, 2, 4}, {1, 5, 6, 7}});
+  const Mesh_quality_2 q = compute_quality(m);
+  EXPECT_EQ(q.number_of_degenerate_quads, 3u);
+  EXPECT_GE(q.number_of_duplicate_vertices, 1u);
+  EXPECT_FALSE(q.is_valid());
+  // An out-of-range index is reported as degenerate, not a crash.
+  const Mesh bad = make_mesh({{0, 0}, {1, 0}, {1, 1}}, {{0, 1, 2, 7}});
+  EXPECT_EQ(compute_quality(bad).number_of_degenerate_quads, 1u);
+}
+
+TEST(MeshQuality2, TJunctionHangingNode)
+{
+  using namespace qm2_test_quality;
+  // A 1x2 quad on the left, two unit quads on the right: (1,1) hangs on edge (1,0)-(1,2).
+  const Mesh m = make_mesh({{0, 0}, {1, 0}, {1, 2}, {0, 2}, {2, 0}, {2, 1}, {1, 1}, {2, 2}},
+                           {{0, 1, 2, 3}, {1, 4, 5, 6}, {6, 5, 7, 2}});
+  const Mesh_quality_2 q = compute_quality(m);
+  EXPECT_EQ(q.number_of_hanging_nodes, 1u);
+  EXPECT_EQ(q.number_of_non_manifold_edges, 0u);
+  EXPECT_EQ(q.number_of_inverted_quads, 0u);
+  EXPECT_FALSE(q.is_valid());
+
+  // The same region, conforming (the left quad split too): no hanging node.
+  const Mesh ok = make_mesh({{0, 0}, {1, 0}, {1, 2}, {0, 2}, {2, 0}, {2, 1}, {1, 1}, {2, 2}, {0, 1}},
+                            {{0, 1, 6, 8}, {8, 6, 2, 3}, {1, 4, 5, 6}, {6, 5, 7, 2}});
+  const Mesh_quality_2 q_ok = compute_quality(ok);
+  EXPECT_EQ(q_ok.number_of_hanging_nodes, 0u);
+  EXPECT_EQ(q_ok.number_of_boundary_loops, 1u);
+  EXPECT_TRUE(q_ok.is_valid());
+}
+
+TEST(MeshQuality2, DuplicateVertices)
+{
+  using namespace qm2_test_quality;
+  // Two unit squares side by side that do not share their common vertices.
+  const Mesh m = make_mesh({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {1, 0}, {2, 0}, {2, 1}, {1, 1}},
+                           {{0, 1, 2, 3}, {4, 5, 6, 7}});
+  const Mesh_quality_2 q = compute_quality(m);
+  EXPECT_EQ(q.number_of_duplicate_vertices, 2u);
+  EXPECT_EQ(q.number_of_hanging_nodes, 0u);
+  EXPECT_EQ(q.number_of_boundary_loops, 2u);
+  EXPECT_FALSE(q.is_valid());
+}
+
+TEST(MeshQuality2, NonManifoldEdges)
+{
+  using namespace qm2_test_quality;
+  // Three quads on edge (0,1).
+  const Mesh three = make_mesh({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {1, -1}, {0, -1}, {1, 2}, {0, 2}},
+                               {{0, 1, 2, 3}, {1, 0, 5, 4}, {0, 1, 6, 7}});
+  EXPECT_EQ(compute_quality(three).number_of_non_manifold_edges, 1u);
+  EXPECT_FALSE(compute_quality(three).is_valid());
+
+  // Two quads using edge (1,2) in the same direction (one of them clockwise).
+  const Mesh same_dir = make_mesh({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {2, 0}, {2, 1}},
+                                  {{0, 1, 2, 3}, {1, 2, 5, 4}});
+  const Mesh_quality_2 q = compute_quality(same_dir);
+  EXPECT_EQ(q.number_of_non_manifold_edges, 1u);
+  EXPECT_EQ(q.number_of_inverted_quads, 1u);
+
+  // Correctly oriented neighbours: the shared edge is interior and manifold.
+  const Mesh ok = make_mesh({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {2, 0}, {2, 1}},
+                            {{0, 1, 2, 3}, {1, 4, 5, 2}});
+  EXPECT_EQ(compute_quality(ok).number_of_non_manifold_edges, 0u);
+  EXPECT_TRUE(compute_quality(ok).is_valid());
+}
+
+TEST(MeshQuality2, UnusedVertices)
+{
+  using namespace qm2_test_quality;
+  const Mesh m = make_mesh({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {5, 5}, {0.5, 0}},
+                           {{0, 1, 2, 3}});
+  const Mesh_quality_2 q = compute_quality(m);
+  EXPECT_EQ(q.number_of_unused_vertices, 2u);
+  // An unused vertex on an edge is not a hanging node.
+  EXPECT_EQ(q.number_of_hanging_nodes, 0u);
+  EXPECT_TRUE(q.is_valid());
+}
+
+TEST(MeshQuality2, GridHistogramAndLoops)
+{
+  using namespace qm2_test_quality;
+  const Mesh m = make_grid(20, 15);
+  const Mesh_quality_2 q = compute_quality(m);
+  EXPECT_EQ(q.number_of_quads, 300u);
+  EXPECT_EQ(histogram_sum(q), 4 * q.number_of_quads);
+  EXPECT_EQ(q.angle_histogram[18], 4 * q.number_of_quads);
+  EXPECT_EQ(q.number_of_boundary_loops, 1u);
+  EXPECT_TRUE(q.is_valid());
+}
+
+TEST(MeshQuality2, HistogramSumsOnMixedMesh)
+{
+  using namespace qm2_test_quality;
+  // Perturbed grid: angles spread over many bins, still one per corner.
+  Mesh m = make_grid(6, 6);
+  for(std::size_t i = 0; i < m.points.size(); ++i) {
+    const double dx = 0.2 * std::sin(double(i) * 1.7), dy = 0.2 * std::cos(double(i) * 2.3);
+    m.points[i] = Point(m.points[i].x() + dx, m.points[i].y() + dy);
+  }
+  const Mesh_quality_2 q = compute_quality(m);
+  EXPECT_EQ(histogram_sum(q), 4 * q.number_of_quads);
+  std::size_t nonzero_bins = 0;
+  for(std::size_t c : q.angle_histogram)
+    nonzero_bins += c > 0 ? 1 : 0;
+  EXPECT_GT(nonzero_bins, 3u);
+  EXPECT_LT(q.min_angle, 90.0);
+  EXPECT_GT(q.max_angle, 90.0);
+  EXPECT_NEAR(q.mean_angle, 90.0, 1e-9);
+  EXPECT_GT(q.share_in_45_135, q.share_in_60_120 - 1e-15);
+}
+
+TEST(MeshQuality2, SquareWithSquareHoleHasTwoBoundaryLoops)
+{
+  using namespace qm2_test_quality;
+  const Mesh m = make_grid(3, 3, {{1, 1}});
+  const Mesh_quality_2 q = compute_quality(m);
+  EXPECT_EQ(q.number_of_quads, 8u);
+  EXPECT_EQ(q.number_of_boundary_loops, 2u);
+  EXPECT_EQ(q.number_of_hanging_nodes, 0u);
+  EXPECT_TRUE(q.is_valid());
+
+  // Two holes touching at a corner (a pinch vertex): still two separate inner loops.
+  const Mesh pinch = make_grid(4, 4, {{1, 1}, {2, 2}});
+  EXPECT_EQ(compute_quality(pinch).number_of_boundary_loops, 3u);
+}
+
+TEST(MeshQuality2, EmptyMesh)
+{
+  using namespace qm2_test_quality;
+  const Mesh m;
+  const Mesh_quality_2 q = compute_quality(m);
+  EXPECT_EQ(q.number_of_quads, 0u);
+  EXPECT_EQ(q.number_of_boundary_loops, 0u);
+  EXPECT_EQ(q.min_angle, 0.0);
+  EXPECT_TRUE(q.is_valid());
+}
