@@ -1,0 +1,562 @@
+// Copyright (c) 2026 Quad_mesher_2 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Quad_mesher_2 developers
+
+#ifndef CGAL_QUAD_MESHER_2_IO_READ_WKT_H
+#define CGAL_QUAD_MESHER_2_IO_READ_WKT_H
+
+#include <CGAL/Quad_mesher_2/Domain_2.h>
+#include <CGAL/Quad_mesher_2/IO/read_node.h>
+
+#include <CGAL/Bbox_2.h>
+#include <CGAL/Polygon_2_algorithms.h>
+#include <CGAL/enum.h>
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <exception>
+#include <istream>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Quad_mesher_2 {
+namespace IO {
+namespace internal {
+
+/// A minimal WKT lexer over a whole text, tracking line numbers.
+class Wkt_lexer
+{
+public:
+  Wkt_lexer(const std::string& text, const std::string& source) : m_s(text), m_source(source) {}
+
+  void skip_space()
+  {
+    while(m_pos < m_s.size()) {
+      const char c = m_s[m_pos];
+      if(c == '\n') { ++m_line; ++m_pos; }
+      else if(c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') ++m_pos;
+      else break;
+    }
+  }
+  bool at_end() { skip_space(); return m_pos >= m_s.size(); }
+  char peek() { skip_space(); return m_pos < m_s.size() ? m_s[m_pos] : '\0'; }
+  bool accept(char c) { if(peek() == c) { ++m_pos; return true; } return false; }
+  std::size_t line() { skip_space(); return m_line; }
+
+  /// A word of letters (upper-cased), or empty if the next character is not a letter.
+  std::string word()
+  {
+    skip_space();
+    std::string w;
+    while(m_pos < m_s.size() && std::isalpha(static_cast<unsigned char>(m_s[m_pos])))
+      w += static_cast<char>(std::toupper(static_cast<unsigned char>(m_s[m_pos++])));
+    return w;
+  }
+  /// The next token up to a blank, a comma or a parenthesis.
+  std::string_view token()
+  {
+    skip_space();
+    const std::size_t b = m_pos;
+    while(m_pos < m_s.size()) {
+      const char c = m_s[m_pos];
+      if(c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v' || c == ',' || c == '(' || c == ')') break;
+      ++m_pos;
+    }
+    if(m_pos == b && m_pos < m_s.size()) ++m_pos;  // a single punctuation character
+    return std::string_view(m_s.data() + b, m_pos - b);
+  }
+  std::string_view peek_token()
+  {
+    const std::size_t p = m_pos, l = m_line;
+    std::string_view t = token();
+    m_pos = p; m_line = l;
+    return t;
+  }
+  std::string where() { return m_source + ":" + std::to_string(line()) + ": "; }
+  std::string where(std::size_t l) const { return m_source + ":" + std::to_string(l) + ": "; }
+  std::string found()
+  {
+    if(at_end()) return "end of file";
+    return quote(peek_token());
+  }
+
+private:
+  const std::string& m_s;
+  const std::string& m_source;
+  std::size_t m_pos = 0;
+  std::size_t m_line = 1;
+};
+
+struct Wkt_ring
+{
+  std::vector<std::array<double, 2> > xy;
+  std::vector<std::size_t> lines;
+  std::size_t line = 0;       // line of the opening parenthesis
+  std::size_t polygon = 0;    // 1-based polygon number in the file
+  std::size_t index = 0;      // 1-based ring number in its polygon (1 = outer ring)
+  std::string describe() const
+  {
+    return index == 1 ? "the outer ring of polygon " + std::to_string(polygon)
+                      : "inner ring " + std::to_string(index - 1) + " (a hole) of polygon " + std::to_string(polygon);
+  }
+};
+
+struct Wkt_data
+{
+  std::vector<Wkt_ring> rings;
+  std::vector<std::array<double, 2> > points;   // POINT / MULTIPOINT
+  std::vector<std::size_t> point_lines;
+};
+
+class Wkt_parser
+{
+public:
+  Wkt_parser(Wkt_lexer& lex, Wkt_data& data, std::string& msg) : m_lex(lex), m_data(data), m_msg(msg) {}
+
+  bool parse()
+  {
+    std::size_t geometries = 0;
+    while(!m_lex.at_end()) {
+      if(m_lex.accept(';')) continue;
+      const std::size_t line = m_lex.line();
+      const std::string kw = m_lex.word();
+      if(kw.empty()) return fail("expected a WKT geometry keyword (POLYGON, MULTIPOLYGON, POINT, MULTIPOINT), found " + m_lex.found());
+      if(kw == "SRID") {  // EWKT prefix `SRID=4326;`
+        if(!m_lex.accept('=')) return fail("expected '=' after SRID, found " + m_lex.found());
+        m_lex.token();
+        if(!m_lex.accept(';')) return fail("expected ';' after the SRID, found " + m_lex.found());
+        continue;
+      }
+      if(kw != "POLYGON" && kw != "MULTIPOLYGON" && kw != "POINT" && kw != "MULTIPOINT")
+        return fail_at(line, "unsupported WKT geometry type " + quote(kw) + " (expected POLYGON, MULTIPOLYGON, POINT or MULTIPOINT)");
+      if(std::isalpha(static_cast<unsigned char>(m_lex.peek()))) {
+        const std::size_t l2 = m_lex.line();
+        const std::string tag = m_lex.word();
+        if(tag == "EMPTY") { ++geometries; continue; }
+        if(tag == "Z" || tag == "M" || tag == "ZM")
+          return fail_at(l2, kw + " " + tag + ": only 2D WKT is supported");
+        return fail_at(l2, "expected '(' or EMPTY after " + kw + ", found " + quote(tag));
+      }
+      bool ok = true;
+      if(kw == "POINT") ok = point_body();
+      else if(kw == "MULTIPOINT") ok = multipoint_body();
+      else if(kw == "POLYGON") ok = polygon_body();
+      else ok = multipolygon_body();
+      if(!ok) return false;
+      ++geometries;
+    }
+    if(geometries == 0) return fail("no WKT geometry found (empty file)");
+    if(m_data.rings.empty() && m_data.points.empty()) return fail("all WKT geometries are EMPTY: no points");
+    return true;
+  }
+
+private:
+  bool fail(const std::string& problem) { m_msg = m_lex.where() + problem; return false; }
+  bool fail_at(std::size_t line, const std::string& problem) { m_msg = m_lex.where(line) + problem; return false; }
+
+  bool expect(char c, const char* context)
+  {
+    if(m_lex.accept(c)) return true;
+    return fail(std::string("expected '") + c + "' " + context + ", found " + m_lex.found());
+  }
+
+  bool is_empty_keyword()
+  {
+    if(!std::isalpha(static_cast<unsigned char>(m_lex.peek()))) return false;
+    const std::string_view t = m_lex.peek_token();
+    if(t.size() == 5) {
+      std::string u(t);
+      for(char& c : u) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+      if(u == "EMPTY") { m_lex.word(); return true; }
+    }
+    return false;
+  }
+
+  bool coordinate(std::array<double, 2>& p, std::size_t& line)
+  {
+    line = m_lex.line();
+    for(int i = 0; i < 2; ++i) {
+      const char c = m_lex.peek();
+      if(c == ',' || c == ')' || c == '(' || c == '\0')
+        return fail(std::string("expected the ") + (i == 0 ? "x" : "y") + " coordinate, found " + m_lex.found());
+      const std::string_view tok = m_lex.token();
+      std::string problem;
+      if(!read_coordinate(tok, p[i], problem, [&]() { return std::string(i == 0 ? "the x coordinate" : "the y coordinate"); }))
+        return fail_at(m_lex.line(), problem);
+    }
+    const char c = m_lex.peek();
+    if(c != ',' && c != ')') {
+      double z;
+      const std::string_view t = m_lex.peek_token();
+      if(parse_double(t, z)) return fail("a third coordinate " + quote(t) + ": only 2D WKT is supported");
+      return fail("expected ',' or ')' after the coordinates, found " + m_lex.found());
+    }
+    return true;
+  }
+
+  bool point_body()
+  {
+    if(!expect('(', "after POINT")) return false;
+    std::array<double, 2> p;
+    std::size_t line;
+    if(!coordinate(p, line)) return false;
+    if(!expect(')', "after the coordinates of POINT")) return false;
+    m_data.points.push_back(p);
+    m_data.point_lines.push_back(line);
+    return true;
+  }
+
+  bool multipoint_body()
+  {
+    if(!expect('(', "after MULTIPOINT")) return false;
+    do {
+      if(is_empty_keyword()) continue;
+      const bool paren = m_lex.accept('(');
+      std::array<double, 2> p;
+      std::size_t line;
+      if(!coordinate(p, line)) return false;
+      if(paren && !expect(')', "after a point of MULTIPOINT")) return false;
+      m_data.points.push_back(p);
+      m_data.point_lines.push_back(line);
+    } while(m_lex.accept(','));
+    return expect(')', "or ',' in MULTIPOINT");
+  }
+
+  bool ring(Wkt_ring& r)
+  {
+    r.line = m_lex.line();
+    if(!expect('(', "to open a ring")) return false;
+    do {
+      std::array<double, 2> p;
+      std::size_t line;
+      if(!coordinate(p, line)) return false;
+      r.xy.push_back(p);
+      r.lines.push_back(line);
+    } while(m_lex.accept(','));
+    return expect(')', "or ',' in a ring");
+  }
+
+  bool polygon_body()
+  {
+    if(is_empty_keyword()) return true;
+    if(!expect('(', "to open a polygon")) return false;
+    ++m_polygons;
+    std::size_t index = 0;
+    do {
+      if(is_empty_keyword()) continue;
+      Wkt_ring r;
+      r.polygon = m_polygons;
+      r.index = ++index;
+      if(!ring(r)) return false;
+      m_data.rings.push_back(std::move(r));
+    } while(m_lex.accept(','));
+    return expect(')', "or ',' after a ring");
+  }
+
+  bool multipolygon_body()
+  {
+    if(!expect('(', "after MULTIPOLYGON")) return false;
+    do {
+      if(!polygon_body()) return false;
+    } while(m_lex.accept(','));
+    return expect(')', "or ',' after a polygon of MULTIPOLYGON");
+  }
+
+  Wkt_lexer& m_lex;
+  Wkt_data& m_data;
+  std::string& m_msg;
+  std::size_t m_polygons = 0;
+};
+
+struct Xy_hash
+{
+  std::size_t operator()(const std::array<double, 2>& p) const
+  {
+    std::uint64_t a, b;
+    const double x = p[0] == 0 ? 0.0 : p[0];  // -0.0 == 0.0
+    const double y = p[1] == 0 ? 0.0 : p[1];
+    std::memcpy(&a, &x, sizeof a);
+    std::memcpy(&b, &y, sizeof b);
+    return static_cast<std::size_t>(a * 0x9E3779B97F4A7C15ull ^ (b + 0x7F4A7C159E3779B9ull + (a << 6) + (a >> 2)));
+  }
+};
+
+/// Is `p` a valid seed for the hole bounded by ring `h`: strictly inside `h`, on no ring, and
+/// not inside any other ring nested in `h` (an island in the hole)? Decided with exact
+/// predicates (`bounded_side_2` through the traits).
+template <class K>
+bool is_valid_hole_seed(const typename K::Point_2& p, const std::vector<std::vector<typename K::Point_2> >& rings,
+                        const std::vector<Bbox_2>& boxes, std::size_t h, const K& k)
+{
+  const auto& H = rings[h];
+  if(CGAL::bounded_side_2(H.begin(), H.end(), p, k) != CGAL::ON_BOUNDED_SIDE) return false;
+  const Bbox_2 pb = p.bbox();
+  for(std::size_t r = 0; r < rings.size(); ++r) {
+    if(r == h || !CGAL::do_overlap(boxes[r], pb)) continue;
+    const auto& R = rings[r];
+    const CGAL::Bounded_side bs = CGAL::bounded_side_2(R.begin(), R.end(), p, k);
+    if(bs == CGAL::ON_BOUNDARY) return false;
+    if(bs == CGAL::ON_BOUNDED_SIDE) {
+      // p is inside R: fine if R encloses H (e.g. H's outer ring), not if R lies in H.
+      for(const auto& q : R) {
+        const CGAL::Bounded_side s = CGAL::bounded_side_2(H.begin(), H.end(), q, k);
+        if(s == CGAL::ON_BOUNDARY) continue;
+        if(s == CGAL::ON_BOUNDED_SIDE) return false;
+        break;
+      }
+    }
+  }
+  return true;
+}
+
+/// Finds a point strictly inside ring `h`, off every ring and outside every ring nested in `h`.
+/// Candidates are built in double precision (a vertical line through `h`: the middle of the
+/// gap just above its lowest crossing with `h`; then centroids of the ears of `h`) and each is
+/// checked exactly with `is_valid_hole_seed`.
+template <class K>
+bool find_hole_seed(const std::vector<std::vector<typename K::Point_2> >& rings, const std::vector<Bbox_2>& boxes,
+                    std::size_t h, const K& k, typename K::Point_2& seed)
+{
+  typedef typename K::Point_2 Point_2;
+  typename K::Construct_point_2 cp = k.construct_point_2_object();
+  const auto& H = rings[h];
+  const std::size_t n = H.size();
+
+  // 1. Vertical lines between consecutive distinct x of H, widest gaps first.
+  std::vector<double> xs;
+  xs.reserve(n);
+  for(const Point_2& q : H) xs.push_back(CGAL::to_double(q.x()));
+  std::sort(xs.begin(), xs.end());
+  xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+  std::vector<std::pair<double, double> > gaps;  // (width, c)
+  for(std::size_t i = 1; i < xs.size(); ++i) {
+    const double c = xs[i - 1] + (xs[i] - xs[i - 1]) / 2;
+    if(c > xs[i - 1] && c < xs[i]) gaps.emplace_back(xs[i] - xs[i - 1], c);
+  }
+  std::sort(gaps.begin(), gaps.end(), [](const std::pair<double, double>& a, const std::pair<double, double>& b) {
+    return a.first > b.first;
+  });
+  if(gaps.size() > 16) gaps.resize(16);
+  auto crossing = [](const Point_2& a, const Point_2& b, double c, double& y) {
+    const double ax = CGAL::to_double(a.x()), bx = CGAL::to_double(b.x());
+    if((ax < c) == (bx < c)) return false;
+    const double ay = CGAL::to_double(a.y()), by = CGAL::to_double(b.y());
+    y = ay + (c - ax) * ((by - ay) / (bx - ax));
+    return true;
+  };
+  for(const auto& g : gaps) {
+    const double c = g.second;
+    double y0 = 0;
+    bool have0 = false;
+    for(std::size_t i = 0; i < n; ++i) {
+      double y;
+      if(crossing(H[i], H[(i + 1) % n], c, y) && (!have0 || y < y0)) { y0 = y; have0 = true; }
+    }
+    if(!have0) continue;
+    double y1 = 0;
+    bool have1 = false;
+    for(std::size_t r = 0; r < rings.size(); ++r) {
+      if(boxes[r].xmin() > c || boxes[r].xmax() < c) continue;
+      const auto& R = rings[r];
+      for(std::size_t i = 0; i < R.size(); ++i) {
+        double y;
+        if(crossing(R[i], R[(i + 1) % R.size()], c, y) && y > y0 && (!have1 || y < y1)) { y1 = y; have1 = true; }
+      }
+    }
+    if(!have1) continue;
+    const double ym = y0 + (y1 - y0) / 2;
+    if(!(ym > y0 && ym < y1)) continue;
+    const Point_2 p = cp(typename K::FT(c), typename K::FT(ym));
+    if(is_valid_hole_seed(p, rings, boxes, h, k)) { seed = p; return true; }
+  }
+
+  // 2. Centroids of the convex corners of H.
+  const CGAL::Orientation o = CGAL::orientation_2(H.begin(), H.end(), k);
+  typename K::Orientation_2 orient = k.orientation_2_object();
+  for(std::size_t i = 0; i < n; ++i) {
+    const Point_2& u = H[(i + n - 1) % n];
+    const Point_2& v = H[i];
+    const Point_2& w = H[(i + 1) % n];
+    if(orient(u, v, w) != o) continue;
+    const double x = (CGAL::to_double(u.x()) + CGAL::to_double(v.x()) + CGAL::to_double(w.x())) / 3;
+    const double y = (CGAL::to_double(u.y()) + CGAL::to_double(v.y()) + CGAL::to_double(w.y())) / 3;
+    const Point_2 p = cp(typename K::FT(x), typename K::FT(y));
+    if(is_valid_hole_seed(p, rings, boxes, h, k)) { seed = p; return true; }
+  }
+  return false;
+}
+
+template <class K>
+bool wkt_to_domain(Wkt_data& data, const std::string& source, Domain_2<K>& out, std::string& msg)
+{
+  typedef typename K::Point_2 Point_2;
+  const K k;
+  auto where = [&](std::size_t line) { return source + ":" + std::to_string(line) + ": "; };
+
+  // Per-ring checks: closure, at least 3 distinct vertices, no repeated vertex, simplicity.
+  std::vector<std::vector<Point_2> > ring_points(data.rings.size());
+  for(std::size_t ri = 0; ri < data.rings.size(); ++ri) {
+    Wkt_ring& r = data.rings[ri];
+    if(r.xy.size() >= 2 && r.xy.front() == r.xy.back()) { r.xy.pop_back(); r.lines.pop_back(); }
+    std::size_t a, b;
+    if(find_duplicate_point(r.xy, a, b)) {
+      if(b == a + 1 || (a == 0 && b + 1 == r.xy.size())) {
+        msg = where(r.lines[b]) + r.describe() + " has a zero-length edge: vertex " + format_point(r.xy[b][0], r.xy[b][1]) +
+              " is repeated (lines " + std::to_string(r.lines[a]) + " and " + std::to_string(r.lines[b]) + ")";
+      } else {
+        msg = where(r.lines[b]) + r.describe() + " is not simple: it passes twice through " +
+              format_point(r.xy[b][0], r.xy[b][1]) + " (lines " + std::to_string(r.lines[a]) + " and " +
+              std::to_string(r.lines[b]) + "): duplicate point";
+      }
+      return false;
+    }
+    if(r.xy.size() < 3) {
+      msg = where(r.line) + r.describe() + " has " + std::to_string(r.xy.size()) +
+            " distinct vertices; a ring needs at least 3";
+      return false;
+    }
+    append_points<K>(r.xy, ring_points[ri], k);
+    if(!CGAL::is_simple_2(ring_points[ri].begin(), ring_points[ri].end(), k)) {
+      msg = where(r.line) + r.describe() + " is not simple (two of its edges cross or touch, or it is degenerate)";
+      return false;
+    }
+  }
+
+  // Vertices: rings may touch at a vertex (they then share it); isolated points must be new.
+  std::vector<std::array<double, 2> > xy;
+  std::vector<std::size_t> lines;
+  std::unordered_map<std::array<double, 2>, std::size_t, Xy_hash> index;
+  std::vector<std::array<std::size_t, 2> > segs;
+  std::vector<std::size_t> seg_lines;
+  for(const Wkt_ring& r : data.rings) {
+    std::vector<std::size_t> ids(r.xy.size());
+    for(std::size_t i = 0; i < r.xy.size(); ++i) {
+      auto ins = index.emplace(r.xy[i], xy.size());
+      if(ins.second) { xy.push_back(r.xy[i]); lines.push_back(r.lines[i]); }
+      ids[i] = ins.first->second;
+    }
+    for(std::size_t i = 0; i < ids.size(); ++i) {
+      segs.push_back({ids[i], ids[(i + 1) % ids.size()]});
+      seg_lines.push_back(r.lines[i]);
+    }
+  }
+  const std::size_t ring_vertices = xy.size();
+  for(std::size_t i = 0; i < data.points.size(); ++i) {
+    auto ins = index.emplace(data.points[i], xy.size());
+    if(!ins.second) {
+      const std::size_t j = ins.first->second;
+      msg = where(data.point_lines[i]) + "duplicate point: " + format_point(data.points[i][0], data.points[i][1]) +
+            " (line " + std::to_string(data.point_lines[i]) + ") is already " +
+            (j < ring_vertices ? "a ring vertex" : "a point") + " (line " + std::to_string(lines[j]) + ")";
+      return false;
+    }
+    xy.push_back(data.points[i]);
+    lines.push_back(data.point_lines[i]);
+  }
+  std::size_t d1, d2;
+  if(find_duplicate_segment(segs, d1, d2)) {
+    const auto& s = segs[d2];
+    msg = where(seg_lines[d2]) + "duplicate segment: the edge from " + format_point(xy[s[0]][0], xy[s[0]][1]) + " to " +
+          format_point(xy[s[1]][0], xy[s[1]][1]) + " (line " + std::to_string(seg_lines[d2]) +
+          ") is also an edge of another ring (line " + std::to_string(seg_lines[d1]) + ")";
+    return false;
+  }
+
+  // Hole seeds, one per inner ring.
+  std::vector<Bbox_2> boxes;
+  boxes.reserve(ring_points.size());
+  for(const auto& R : ring_points) {
+    Bbox_2 b = R.front().bbox();
+    for(const Point_2& q : R) b += q.bbox();
+    boxes.push_back(b);
+  }
+  std::vector<Point_2> holes;
+  for(std::size_t ri = 0; ri < data.rings.size(); ++ri) {
+    if(data.rings[ri].index == 1) continue;
+    Point_2 seed;
+    if(!find_hole_seed(ring_points, boxes, ri, k, seed)) {
+      msg = where(data.rings[ri].line) + "cannot find a point strictly inside " + data.rings[ri].describe() +
+            " and outside every other ring (do rings cross each other?)";
+      return false;
+    }
+    holes.push_back(seed);
+  }
+
+  append_points<K>(xy, out.points, k);
+  out.segments = std::move(segs);
+  out.holes = std::move(holes);
+  return true;
+}
+
+template <class K>
+bool read_WKT_impl(std::string&& text, const std::string& source, Domain_2<K>& out, std::string* error)
+{
+  out = Domain_2<K>();
+  std::string msg;
+  try {
+    Wkt_lexer lex(text, source);
+    Wkt_data data;
+    Wkt_parser parser(lex, data, msg);
+    if(text.empty()) msg = source + ":1: empty file";
+    else if(parser.parse() && wkt_to_domain(data, source, out, msg)) return true;
+  } catch(const std::exception& e) {
+    msg = source + ": " + e.what();
+  } catch(...) {
+    msg = source + ": unknown error";
+  }
+  out = Domain_2<K>();
+  set_error(error, msg);
+  return false;
+}
+
+} // namespace internal
+
+/// \ingroup PkgQuadMesher2IO
+/// Reads WKT geometries into `out` (replacing its content): any sequence of `POLYGON`,
+/// `MULTIPOLYGON`, `POINT` and `MULTIPOINT` (keywords case-insensitive, `EMPTY` allowed, an
+/// EWKT `SRID=...;` prefix skipped). Only 2D coordinates are accepted (`Z`/`M` are errors).
+///
+/// Each ring becomes a closed chain of segments (the closing repeat of the first vertex is
+/// optional). Each ring must have at least 3 distinct vertices, no repeated vertex and be
+/// simple (`CGAL::is_simple_2`). Rings may touch each other at a vertex, which is then
+/// shared; an edge shared by two rings, or a POINT equal to another point or ring vertex,
+/// is an error. For each inner ring (hole) a seed point is added to `out.holes`: it lies
+/// strictly inside the hole ring and outside every ring nested in the hole (islands),
+/// checked with exact predicates. Ring orientation is kept as in the file.
+/// Crossings between different rings are not detected.
+///
+/// Errors: one message `SOURCE:LINE: problem` in `*error`, `out` left empty. Never throws.
+template <class K>
+bool read_WKT(std::istream& in, Domain_2<K>& out, std::string* error = nullptr,
+              const std::string& source_name = "<stream>")
+{
+  std::string text, msg;
+  if(!internal::slurp(in, text, source_name, msg)) { out = Domain_2<K>(); internal::set_error(error, msg); return false; }
+  return internal::read_WKT_impl(std::move(text), source_name, out, error);
+}
+
+/// \ingroup PkgQuadMesher2IO
+/// Reads the WKT file `filename`; see the stream overload.
+template <class K>
+bool read_WKT(const std::string& filename, Domain_2<K>& out, std::string* error = nullptr)
+{
+  std::string text, msg;
+  if(!internal::slurp_file(filename, text, msg)) { out = Domain_2<K>(); internal::set_error(error, msg); return false; }
+  return internal::read_WKT_impl(std::move(text), filename, out, error);
+}
+
+} // namespace IO
+} // namespace Quad_mesher_2
+} // namespace CGAL
+
+#endif // CGAL_QUAD_MESHER_2_IO_READ_WKT_H
