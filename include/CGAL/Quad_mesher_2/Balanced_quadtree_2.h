@@ -214,22 +214,37 @@ public:
     for_each_leaf([&](const Cell_key& k) { by_level[k.level].push_back(k); });
     m_new_leaves = &by_level;
     for(int level = m_depth; level >= 2; --level) {
-      // by_level[level] does not grow while this level is processed.
-      for(std::size_t n = 0; n < by_level[level].size(); ++n) {
-        const Cell_key k = by_level[level][n];
+      // by_level[level] does not grow while this level is processed; Morton order keeps the
+      // lookups of neighbouring leaves close together in time (and so in cache).
+      std::vector<std::pair<std::uint64_t, Cell_key>> ordered;
+      ordered.reserve(by_level[level].size());
+      for(const Cell_key& k : by_level[level])
+        ordered.emplace_back(morton_code(k), k);
+      std::sort(ordered.begin(), ordered.end(),
+                [](const auto& a, const auto& b) { return a.first < b.first; });
+      for(const auto& entry : ordered) {
+        const Cell_key& k = entry.second;
         if(!is_leaf(k))
           continue;
-        for(int dy = -1; dy <= 1; ++dy)
-          for(int dx = -1; dx <= 1; ++dx) {
-            std::int64_t ni = std::int64_t(k.i) + dx, nj = std::int64_t(k.j) + dy;
-            if((dx == 0 && dy == 0) || !in_grid(level, ni, nj))
-              continue;
-            ensure_node(Cell_key(level - 1, std::uint32_t(ni >> 1), std::uint32_t(nj >> 1)));
-          }
+        // The 3x3 block of level-L cells around k lies in a 2x2 block of level L-1 cells,
+        // one of which is k's parent: at most three cells to make nodes.
+        const std::int64_t i0 = k.i & 1 ? k.i : std::int64_t(k.i) - 1;
+        const std::int64_t j0 = k.j & 1 ? k.j : std::int64_t(k.j) - 1;
+        for(std::int64_t nj = j0; nj <= j0 + 1; ++nj)
+          for(std::int64_t ni = i0; ni <= i0 + 1; ++ni)
+            if(in_grid(level, ni, nj))
+              ensure_node(Cell_key(level - 1, std::uint32_t(ni >> 1), std::uint32_t(nj >> 1)));
       }
     }
     m_new_leaves = nullptr;
     CGAL_expensive_postcondition(is_strongly_balanced());
+  }
+
+  /// The Morton (Z-order) code of a cell's lower-left corner on the `max_depth()` lattice.
+  std::uint64_t morton_code(const Cell_key& k) const
+  {
+    return spread_bits(std::uint64_t(k.i) << (m_max_depth - k.level))
+           | (spread_bits(std::uint64_t(k.j) << (m_max_depth - k.level)) << 1);
   }
 
   /// `true` if leaves sharing an edge or a corner never differ by more than one level.
@@ -260,6 +275,18 @@ public:
 private:
   static constexpr std::uint32_t LEAF = 1;
   static constexpr std::uint32_t SPLIT = 0;
+
+  // spreads the low 32 bits of x to the even bits of the result
+  static std::uint64_t spread_bits(std::uint64_t x)
+  {
+    x &= 0xffffffffULL;
+    x = (x | (x << 16)) & 0x0000ffff0000ffffULL;
+    x = (x | (x << 8)) & 0x00ff00ff00ff00ffULL;
+    x = (x | (x << 4)) & 0x0f0f0f0f0f0f0f0fULL;
+    x = (x | (x << 2)) & 0x3333333333333333ULL;
+    x = (x | (x << 1)) & 0x5555555555555555ULL;
+    return x;
+  }
 
   void add_leaf(const Cell_key& k)
   {

@@ -29,7 +29,7 @@ public:
     std::size_t capacity = 16;
     while(capacity < 2 * expected + 2)
       capacity *= 2;
-    if(capacity > m_keys.size())
+    if(capacity > m_slots.size())
       rehash(capacity);
   }
 
@@ -38,9 +38,9 @@ public:
   const std::uint32_t* find(std::uint64_t key) const
   {
     for(std::size_t slot = hash(key) & m_mask;; slot = (slot + 1) & m_mask) {
-      if(m_keys[slot] == key)
-        return &m_values[slot];
-      if(m_keys[slot] == empty_key)
+      if(m_slots[slot].key == key)
+        return &m_slots[slot].value;
+      if(m_slots[slot].key == empty_key)
         return nullptr;
     }
   }
@@ -54,16 +54,17 @@ public:
   // was inserted.
   std::pair<std::uint32_t*, bool> insert(std::uint64_t key, std::uint32_t value)
   {
-    if(2 * (m_size + 1) > m_keys.size())
-      rehash(2 * m_keys.size());
+    if(2 * (m_size + 1) > m_slots.size())
+      rehash(2 * m_slots.size());
     for(std::size_t slot = hash(key) & m_mask;; slot = (slot + 1) & m_mask) {
-      if(m_keys[slot] == key)
-        return { &m_values[slot], false };
-      if(m_keys[slot] == empty_key) {
-        m_keys[slot] = key;
-        m_values[slot] = value;
+      Slot& s = m_slots[slot];
+      if(s.key == key)
+        return { &s.value, false };
+      if(s.key == empty_key) {
+        s.key = key;
+        s.value = value;
         ++m_size;
-        return { &m_values[slot], true };
+        return { &s.value, true };
       }
     }
   }
@@ -71,15 +72,12 @@ public:
   template <class Function>
   void for_each(Function f) const
   {
-    for(std::size_t slot = 0; slot < m_keys.size(); ++slot)
-      if(m_keys[slot] != empty_key)
-        f(m_keys[slot], m_values[slot]);
+    for(const Slot& s : m_slots)
+      if(s.key != empty_key)
+        f(s.key, s.value);
   }
 
-  std::size_t memory_bytes() const
-  {
-    return m_keys.capacity() * sizeof(std::uint64_t) + m_values.capacity() * sizeof(std::uint32_t);
-  }
+  std::size_t memory_bytes() const { return m_slots.capacity() * sizeof(Slot); }
 
 private:
   static std::size_t hash(std::uint64_t x)
@@ -91,27 +89,30 @@ private:
     return static_cast<std::size_t>(x);
   }
 
+  // key and value side by side: one cache miss per probe, not two
+  struct Slot
+  {
+    std::uint64_t key;
+    std::uint32_t value;
+  };
+
   void rehash(std::size_t capacity)
   {
-    std::vector<std::uint64_t> keys(capacity, empty_key);
-    std::vector<std::uint32_t> values(capacity);
+    std::vector<Slot> slots(capacity, Slot{ empty_key, 0 });
     std::size_t mask = capacity - 1;
-    for(std::size_t slot = 0; slot < m_keys.size(); ++slot) {
-      if(m_keys[slot] == empty_key)
+    for(const Slot& old : m_slots) {
+      if(old.key == empty_key)
         continue;
-      std::size_t s = hash(m_keys[slot]) & mask;
-      while(keys[s] != empty_key)
+      std::size_t s = hash(old.key) & mask;
+      while(slots[s].key != empty_key)
         s = (s + 1) & mask;
-      keys[s] = m_keys[slot];
-      values[s] = m_values[slot];
+      slots[s] = old;
     }
-    m_keys.swap(keys);
-    m_values.swap(values);
+    m_slots.swap(slots);
     m_mask = mask;
   }
 
-  std::vector<std::uint64_t> m_keys;
-  std::vector<std::uint32_t> m_values;
+  std::vector<Slot> m_slots;
   std::size_t m_size = 0;
   std::size_t m_mask = 0;
 };

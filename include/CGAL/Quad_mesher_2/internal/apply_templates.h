@@ -10,7 +10,9 @@
 #include <CGAL/Quad_mesher_2/internal/Key_map.h>
 #include <CGAL/Quad_mesher_2/internal/template_table.h>
 
+#include <algorithm>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -38,15 +40,16 @@ struct Template_choice
   int corner; // the active corner of a transition (0..3 as in template_table.h)
 };
 
+// `true` if the level-L lattice vertex (X, Y), a corner of leaf `k`, is active.
 template <class Tree>
-bool is_active_vertex(const Tree& tree, int level, std::int64_t X, std::int64_t Y)
+bool is_active_vertex(const Tree& tree, const Cell_key& k, std::int64_t X, std::int64_t Y)
 {
   if(((X + Y) & 1) != 0)
     return false;
   for(std::int64_t j = Y - 1; j <= Y; ++j)
     for(std::int64_t i = X - 1; i <= X; ++i)
-      if(tree.in_grid(level, i, j)
-         && tree.is_split(Cell_key(level, std::uint32_t(i), std::uint32_t(j))))
+      if((i != k.i || j != k.j) && tree.in_grid(k.level, i, j)
+         && tree.is_split(Cell_key(k.level, std::uint32_t(i), std::uint32_t(j))))
         return true;
   return false;
 }
@@ -58,7 +61,7 @@ Template_choice choose_template(const Tree& tree, const Cell_key& k)
   static const int corner_dy[4] = { 0, 0, 1, 1 };
   int count = 0, last = -1;
   for(int c = 0; c < 4; ++c)
-    if(is_active_vertex(tree, k.level, std::int64_t(k.i) + corner_dx[c],
+    if(is_active_vertex(tree, k, std::int64_t(k.i) + corner_dx[c],
                         std::int64_t(k.j) + corner_dy[c])) {
       ++count;
       last = c;
@@ -79,6 +82,23 @@ inline const Quad_template& template_of(const Template_choice& t)
   }
 }
 
+// The leaves in Morton (Z) order: neighbours are visited close together in time, so the
+// hash-map slots of the vertices they share are still in cache.
+template <class Tree>
+std::vector<Cell_key> leaves_in_morton_order(const Tree& tree)
+{
+  std::vector<std::pair<std::uint64_t, Cell_key>> coded;
+  coded.reserve(tree.number_of_leaves());
+  tree.for_each_leaf([&](const Cell_key& k) { coded.emplace_back(tree.morton_code(k), k); });
+  std::sort(coded.begin(), coded.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<Cell_key> result;
+  result.reserve(coded.size());
+  for(const auto& c : coded)
+    result.push_back(c.second);
+  return result;
+}
+
 // The conforming all-quad mesh of a strongly balanced tree: every leaf replaced by its
 // template. Vertices are deduplicated by their integer key on the finest lattice, never by
 // comparing coordinates. If `quad_cells` is given, it receives the leaf of each quad.
@@ -90,14 +110,15 @@ templated_mesh(const Tree& tree, std::vector<Cell_key>* quad_cells = nullptr)
   typedef typename Tree::Point_2 Point_2;
   Quad_mesh_2<Point_2> mesh;
   const int vertex_level = tree.vertex_level();
-  Key_map vertex_index(tree.number_of_leaves() * 3 / 2);
-  mesh.quads.reserve(tree.number_of_leaves() * 3 / 2);
+  const std::size_t expected = tree.number_of_leaves() * 2;
+  Key_map vertex_index(expected);
+  mesh.quads.reserve(expected);
   std::vector<std::uint64_t> vertex_keys;
-  vertex_keys.reserve(tree.number_of_leaves() * 3 / 2);
+  vertex_keys.reserve(expected);
   if(quad_cells != nullptr)
     quad_cells->clear();
 
-  tree.for_each_leaf([&](const Cell_key& k) {
+  for(const Cell_key& k : leaves_in_morton_order(tree)) {
     const Quad_template& t = template_of(choose_template(tree, k));
     const int shift = vertex_level - k.level - 1; // local half-cell units -> vertex lattice
     const std::uint64_t x0 = std::uint64_t(k.i) << (shift + 1);
@@ -117,7 +138,7 @@ templated_mesh(const Tree& tree, std::vector<Cell_key>* quad_cells = nullptr)
       if(quad_cells != nullptr)
         quad_cells->push_back(k);
     }
-  });
+  }
 
   mesh.points.reserve(vertex_keys.size());
   for(std::uint64_t key : vertex_keys)
