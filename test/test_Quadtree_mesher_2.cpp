@@ -1,0 +1,195 @@
+// Copyright (c) 2026 Quad_mesher_2 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Quad_mesher_2 developers
+//
+// The mesher's first stage: sizing (paper §4.2), balance, templates, output.
+
+#include "qm2_mesh_checks.h"
+#include "qm2_test_kernel.h"
+
+#include <CGAL/Quad_mesher_2/Quadtree_mesher_2.h>
+
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace qm2_test_mesher {
+
+using qm2_test::K;
+namespace QM = CGAL::Quad_mesher_2;
+using Domain = QM::Domain_2<K>;
+using Criteria = QM::Mesh_criteria_2<K>;
+using Mesher = QM::Quadtree_mesher_2<K>;
+
+Domain random_domain(std::size_t n, unsigned seed, double scale = 1, double shift = 0)
+{
+  Domain d;
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  for(std::size_t i = 0; i < n; ++i)
+    d.points.emplace_back(shift + scale * u(rng), shift + scale * u(rng));
+  return d;
+}
+
+double rect_x1(const Mesher::Quadtree& t) { return t.origin_x() + t.root_cells_x() * t.root_side(); }
+double rect_y1(const Mesher::Quadtree& t) { return t.origin_y() + t.root_cells_y() * t.root_side(); }
+
+TEST(Quadtree_mesher_2, cell_of_each_point_is_no_larger_than_its_spacing)
+{
+  Domain d = random_domain(300, 1);
+  Mesher mesher(d);
+  auto mesh = mesher.run();
+  const auto& tree = mesher.quadtree();
+  for(std::size_t i = 0; i < d.points.size(); ++i) {
+    double s = std::numeric_limits<double>::infinity();
+    for(std::size_t j = 0; j < d.points.size(); ++j)
+      if(j != i)
+        s = (std::min)(s, std::sqrt(CGAL::to_double(CGAL::squared_distance(d.points[i], d.points[j]))));
+    auto k = tree.locate(d.points[i]);
+    EXPECT_LE(tree.cell_side(k.level), s) << "point " << i;
+  }
+  EXPECT_TRUE(qm2_checks::tiles_rectangle(mesh, tree.origin_x(), tree.origin_y(), rect_x1(tree), rect_y1(tree)));
+  auto range = qm2_checks::angle_range(mesh);
+  EXPECT_GE(range.min, 45 - 1e-9);
+  EXPECT_LE(range.max, 135 + 1e-9);
+  EXPECT_TRUE(tree.is_strongly_balanced());
+}
+
+TEST(Quadtree_mesher_2, max_size_bounds_every_cell)
+{
+  Domain d;
+  d.points = { K::Point_2(0, 0), K::Point_2(3, 1) };
+  Mesher mesher(d, Criteria(0.1));
+  auto mesh = mesher.run();
+  mesher.quadtree().for_each_leaf([&](const QM::Cell_key& k) { EXPECT_LE(mesher.quadtree().cell_side(k.level), 0.1); });
+  EXPECT_GT(mesh.quads.size(), 300u);
+}
+
+TEST(Quadtree_mesher_2, min_size_caps_refinement_instead_of_failing)
+{
+  Domain d;
+  d.points = { K::Point_2(0, 0), K::Point_2(1, 1), K::Point_2(0.5, 0.5), K::Point_2(0.5, 0.5 + 1e-12) };
+  EXPECT_THROW(Mesher(d).run(), QM::Meshing_error); // 1e-12 apart needs ~40 levels
+  Mesher capped(d, Criteria(0, 1e-3));
+  auto mesh = capped.run();
+  capped.quadtree().for_each_leaf([&](const QM::Cell_key& k) { EXPECT_GE(capped.quadtree().cell_side(k.level), 1e-3); });
+  EXPECT_GT(mesh.quads.size(), 0u);
+}
+
+TEST(Quadtree_mesher_2, errors_name_the_points)
+{
+  Domain d;
+  d.points = { K::Point_2(0, 0), K::Point_2(1, 1), K::Point_2(1, 1) };
+  try {
+    Mesher(d).run();
+    FAIL();
+  } catch(const QM::Meshing_error& e) {
+    EXPECT_NE(std::string(e.what()).find("input points 1 and 2 coincide"), std::string::npos) << e.what();
+  }
+  Domain empty;
+  EXPECT_THROW(Mesher(empty).run(), QM::Meshing_error);
+  EXPECT_THROW(Criteria(-1), QM::Meshing_error);
+  EXPECT_THROW(Criteria(std::nan("")), QM::Meshing_error);
+  EXPECT_THROW(Criteria(1, 2), QM::Meshing_error);
+  EXPECT_THROW(Criteria(0, 0, 30), QM::Meshing_error);
+}
+
+TEST(Quadtree_mesher_2, user_sizing_field)
+{
+  Domain d;
+  d.points = { K::Point_2(-1, -1), K::Point_2(1, 1) };
+  Criteria c;
+  c.set_use_point_spacing(false);
+  // fine near the origin, coarse away from it
+  c.set_sizing_field([](const K::Point_2& p) {
+    return K::FT(0.02 + 0.3 * std::sqrt(CGAL::to_double(p.x() * p.x() + p.y() * p.y())));
+  });
+  Mesher mesher(d, c);
+  auto mesh = mesher.run();
+  const auto& tree = mesher.quadtree();
+  EXPECT_LE(tree.cell_side(tree.locate(K::Point_2(0, 0)).level), 0.02);
+  EXPECT_GT(tree.cell_side(tree.locate(K::Point_2(0.95, 0.95)).level), 0.1);
+  EXPECT_TRUE(qm2_checks::tiles_rectangle(mesh, tree.origin_x(), tree.origin_y(), rect_x1(tree), rect_y1(tree)));
+  Criteria bad;
+  bad.set_sizing_field([](const K::Point_2&) { return K::FT(0); });
+  EXPECT_THROW(Mesher(d, bad).run(), QM::Meshing_error);
+}
+
+TEST(Quadtree_mesher_2, vertices_are_exact_lattice_points)
+{
+  Domain d = random_domain(50, 3, 1e-3, 12345.678);
+  Mesher mesher(d);
+  auto mesh = mesher.run();
+  const auto& tree = mesher.quadtree();
+  const double h = tree.cell_side(tree.vertex_level());
+  for(const auto& p : mesh.points) {
+    double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y());
+    EXPECT_EQ(std::fmod(x - tree.origin_x(), h), 0.0);
+    EXPECT_EQ(std::fmod(y - tree.origin_y(), h), 0.0);
+    EXPECT_EQ(K::FT(x), p.x()); // the coordinate is the double exactly, under both kernels
+  }
+  auto range = qm2_checks::angle_range(mesh);
+  EXPECT_GE(range.min, 45 - 1e-9);
+  EXPECT_LE(range.max, 135 + 1e-9);
+}
+
+TEST(Quadtree_mesher_2, translation_and_power_of_two_scaling_keep_the_mesh_topology)
+{
+  auto count = [](double scale, double shift) {
+    Domain d = random_domain(100, 5, scale, shift);
+    Mesher mesher(d);
+    auto mesh = mesher.run();
+    return std::make_pair(mesh.quads.size(), mesher.quadtree().depth());
+  };
+  auto reference = count(1, 0);
+  EXPECT_EQ(count(std::ldexp(1.0, 30), 0), reference);
+  EXPECT_EQ(count(std::ldexp(1.0, -30), 0), reference);
+}
+
+TEST(Quadtree_mesher_2, copies_into_a_surface_mesh)
+{
+  Domain d = random_domain(40, 9);
+  auto mesh = QM::make_quad_mesh_2(d);
+  CGAL::Surface_mesh<K::Point_2> sm;
+  ASSERT_TRUE(QM::copy_to_face_graph(mesh, sm));
+  EXPECT_EQ(num_faces(sm), mesh.quads.size());
+  EXPECT_EQ(num_vertices(sm), mesh.points.size());
+  EXPECT_TRUE(CGAL::is_quad_mesh(sm));
+  EXPECT_TRUE(sm.is_valid(false));
+}
+
+TEST(Quadtree_mesher_2, stage_timings_are_recorded)
+{
+  Domain d = random_domain(10, 2);
+  Mesher mesher(d);
+  mesher.run();
+  std::vector<std::string> names;
+  for(const auto& t : mesher.timings()) {
+    names.push_back(t.first);
+    EXPECT_GE(t.second, 0.0);
+  }
+  EXPECT_EQ(names, (std::vector<std::string>{ "refine", "balance", "templates" }));
+}
+
+TEST(Quadtree_mesher_2, single_point_and_collinear_points)
+{
+  Domain one;
+  one.points = { K::Point_2(3, 4) };
+  auto mesh = QM::make_quad_mesh_2(one);
+  EXPECT_EQ(mesh.quads.size(), 1u);
+  Domain line;
+  for(int i = 0; i < 20; ++i)
+    line.points.emplace_back(0.5, 0.1 * i);
+  Mesher mesher(line);
+  auto m = mesher.run();
+  auto range = qm2_checks::angle_range(m);
+  EXPECT_GE(range.min, 45 - 1e-9);
+  EXPECT_LE(range.max, 135 + 1e-9);
+  EXPECT_TRUE(qm2_checks::is_conforming(m));
+}
+
+} // namespace qm2_test_mesher
