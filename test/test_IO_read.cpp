@@ -1,0 +1,643 @@
+// Copyright (c) 2026 Quad_mesher_2 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Quad_mesher_2 developers
+//
+// Tests of the domain readers in CGAL/Quad_mesher_2/IO/: .poly, .node, .xy, WKT, read_domain.
+
+#include "qm2_test_kernel.h"
+
+#include <CGAL/Quad_mesher_2/Domain_2.h>
+#include <CGAL/Quad_mesher_2/IO/read_WKT.h>
+#include <CGAL/Quad_mesher_2/IO/read_domain.h>
+#include <CGAL/Quad_mesher_2/IO/read_node.h>
+#include <CGAL/Quad_mesher_2/IO/read_poly.h>
+#include <CGAL/Quad_mesher_2/IO/read_xy.h>
+
+#include <CGAL/Polygon_2_algorithms.h>
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+namespace qm2_test_io_read {
+
+using K = qm2_test::K;
+using Domain = CGAL::Quad_mesher_2::Domain_2<K>;
+using Point_2 = K::Point_2;
+namespace QIO = CGAL::Quad_mesher_2::IO;
+namespace fs = std::filesystem;
+
+inline const char* kernel_name() { return qm2_test::exact_constructions ? "epeck" : "epick"; }
+
+inline fs::path scratch_path()
+{
+  return fs::temp_directory_path() /
+         ("qm2_test_io_read_" + std::string(kernel_name()) + "_" + std::to_string(::getpid()));
+}
+
+/// A scratch directory private to this process (both kernel binaries may run at once).
+inline fs::path scratch_dir()
+{
+  static const fs::path dir = [] {
+    fs::path d = scratch_path();
+    fs::create_directories(d);
+    return d;
+  }();
+  return dir;
+}
+
+/// Removes the scratch directory at exit.
+struct Scratch_cleanup
+{
+  ~Scratch_cleanup()
+  {
+    std::error_code ec;
+    fs::remove_all(scratch_path(), ec);
+  }
+};
+inline Scratch_cleanup scratch_cleanup;
+
+inline std::string write_file(const std::string& name, const std::string& content)
+{
+  const fs::path p = scratch_dir() / name;
+  std::ofstream out(p, std::ios::binary);
+  out << content;
+  return p.string();
+}
+
+inline bool is_empty(const Domain& d) { return d.points.empty() && d.segments.empty() && d.holes.empty(); }
+
+inline bool same_domain(const Domain& a, const Domain& b)
+{
+  return a.points == b.points && a.segments == b.segments && a.holes == b.holes;
+}
+
+/// Expects a failed read with an error `FILE:LINE: ...` that contains `keyword`.
+inline void expect_error(bool ok, const Domain& d, const std::string& err, const std::string& file,
+                         std::size_t line, const std::string& keyword)
+{
+  EXPECT_FALSE(ok);
+  EXPECT_TRUE(is_empty(d));
+  const std::string prefix = file + ":" + std::to_string(line) + ": ";
+  EXPECT_EQ(err.rfind(prefix, 0), 0u) << "error: " << err << "\nexpected prefix: " << prefix;
+  EXPECT_NE(err.find(keyword), std::string::npos) << "error: " << err << "\nexpected key word: " << keyword;
+}
+
+/// A square with a square hole, 1-based, with markers and comments.
+inline std::string square_with_hole_poly(int base)
+{
+  std::ostringstream s;
+  const int b = base;
+  s << "# square with a hole\n8 2 1 1\n";
+  const double xy[8][2] = {{0, 0}, {10, 0}, {10, 10}, {0, 10}, {2, 2}, {8, 2}, {8, 8}, {2, 8}};
+  for(int i = 0; i < 8; ++i) s << (i + b) << " " << xy[i][0] << " " << xy[i][1] << " 0.5 " << (i < 4 ? 1 : 2) << "\n";
+  s << "8 1  # segments\n";
+  for(int i = 0; i < 4; ++i) s << (i + b) << " " << (i + b) << " " << ((i + 1) % 4 + b) << " 1\n";
+  for(int i = 0; i < 4; ++i) s << (i + 4 + b) << " " << (i + 4 + b) << " " << ((i + 1) % 4 + 4 + b) << " 2\n";
+  s << "1\n" << b << " 5 5\n";
+  return s.str();
+}
+
+/// Writes `d` as a .poly with the given index base (full double precision).
+inline std::string to_poly(const Domain& d, int base)
+{
+  std::ostringstream s;
+  s << std::setprecision(17);
+  s << d.points.size() << " 2 0 0\n";
+  for(std::size_t i = 0; i < d.points.size(); ++i)
+    s << (i + base) << " " << CGAL::to_double(d.points[i].x()) << " " << CGAL::to_double(d.points[i].y()) << "\n";
+  s << d.segments.size() << " 0\n";
+  for(std::size_t i = 0; i < d.segments.size(); ++i)
+    s << (i + base) << " " << (d.segments[i][0] + base) << " " << (d.segments[i][1] + base) << "\n";
+  s << d.holes.size() << "\n";
+  for(std::size_t i = 0; i < d.holes.size(); ++i)
+    s << (i + base) << " " << CGAL::to_double(d.holes[i].x()) << " " << CGAL::to_double(d.holes[i].y()) << "\n";
+  return s.str();
+}
+
+struct Counts { std::size_t vertices = 0, segments = 0, holes = 0; bool found = false; };
+
+inline Counts read_check_counts(const fs::path& check)
+{
+  Counts c;
+  std::ifstream in(check);
+  std::string line;
+  const std::regex re(R"(vertices:\s*(\d+)\s+segments:\s*(\d+)\s+hole points:\s*(\d+))");
+  while(std::getline(in, line)) {
+    std::smatch m;
+    if(std::regex_search(line, m, re)) {
+      c.vertices = std::stoul(m[1]); c.segments = std::stoul(m[2]); c.holes = std::stoul(m[3]);
+      c.found = true;
+      break;
+    }
+  }
+  return c;
+}
+
+struct Bad_case
+{
+  const char* name;
+  const char* content;
+  std::size_t line;
+  const char* keyword;
+};
+
+} // namespace qm2_test_io_read
+
+// ---------------------------------------------------------------------------------------------
+// Real data
+
+TEST(IO_read, RealPolyCasesMatchCheckCounts)
+{
+  using namespace qm2_test_io_read;
+  const fs::path dir(QM2_SHARED_DATA_DIR);
+  if(!fs::is_directory(dir)) GTEST_SKIP() << "no shared data directory " << dir;
+  std::size_t n = 0;
+  for(const auto& sub : fs::directory_iterator(dir)) {
+    if(!sub.is_directory()) continue;
+    for(const auto& f : fs::directory_iterator(sub.path())) {
+      if(f.path().extension() != ".poly") continue;
+      const std::string stem = f.path().stem().string();
+      const fs::path check = sub.path() / (stem == sub.path().filename().string() ? "CHECK.txt" : "CHECK_" + stem + ".txt");
+      const Counts c = read_check_counts(check);
+      ASSERT_TRUE(c.found) << "no counts in " << check;
+      Domain d;
+      std::string err;
+      ASSERT_TRUE(QIO::read_poly(f.path().string(), d, &err)) << err;
+      EXPECT_EQ(d.points.size(), c.vertices) << f.path();
+      EXPECT_EQ(d.segments.size(), c.segments) << f.path();
+      EXPECT_EQ(d.holes.size(), c.holes) << f.path();
+      for(const auto& s : d.segments) {
+        ASSERT_LT(s[0], d.points.size());
+        ASSERT_LT(s[1], d.points.size());
+      }
+      ++n;
+    }
+  }
+  EXPECT_GE(n, 13u);
+}
+
+TEST(IO_read, ExampleLakeSuperior)
+{
+  using namespace qm2_test_io_read;
+  Domain d;
+  std::string err;
+  ASSERT_TRUE(QIO::read_poly(std::string(QM2_DATA_DIR) + "/lake_superior/lake_superior.poly", d, &err)) << err;
+  EXPECT_EQ(d.points.size(), 518u);
+  EXPECT_EQ(d.segments.size(), 518u);
+  EXPECT_EQ(d.holes.size(), 6u);
+  EXPECT_FALSE(d.is_point_cloud());
+}
+
+// ---------------------------------------------------------------------------------------------
+// .poly features
+
+TEST(IO_read, PolyZeroAndOneBasedGiveTheSameDomain)
+{
+  using namespace qm2_test_io_read;
+  Domain d0, d1;
+  std::string err;
+  std::istringstream s0(square_with_hole_poly(0)), s1(square_with_hole_poly(1));
+  ASSERT_TRUE(QIO::read_poly(s0, d0, &err)) << err;
+  ASSERT_TRUE(QIO::read_poly(s1, d1, &err)) << err;
+  EXPECT_EQ(d0.points.size(), 8u);
+  EXPECT_EQ(d0.segments.size(), 8u);
+  ASSERT_EQ(d0.holes.size(), 1u);
+  EXPECT_EQ(d0.segments[0], (std::array<std::size_t, 2>{0, 1}));
+  EXPECT_EQ(d0.points[2], Point_2(10, 10));
+  EXPECT_EQ(d0.holes[0], Point_2(5, 5));
+  EXPECT_TRUE(same_domain(d0, d1));
+
+  // The same with a real case, rewritten 0-based.
+  Domain real, real0;
+  ASSERT_TRUE(QIO::read_poly(std::string(QM2_DATA_DIR) + "/lake_superior/lake_superior.poly", real, &err)) << err;
+  const std::string f0 = write_file("lake0.poly", to_poly(real, 0));
+  ASSERT_TRUE(QIO::read_poly(f0, real0, &err)) << err;
+  EXPECT_TRUE(same_domain(real, real0));
+}
+
+TEST(IO_read, PolyCoordinatesAreTheParsedDoubles)
+{
+  using namespace qm2_test_io_read;
+  std::istringstream s("2 2 0 0\n1 0.1 -1e-300\n2 +1.5E3 123456789.123456789\n0 0\n0\n");
+  Domain d;
+  std::string err;
+  ASSERT_TRUE(QIO::read_poly(s, d, &err)) << err;
+  ASSERT_EQ(d.points.size(), 2u);
+  EXPECT_TRUE(d.is_point_cloud());
+  EXPECT_EQ(d.points[0].x(), K::FT(0.1));
+  EXPECT_EQ(d.points[0].y(), K::FT(-1e-300));
+  EXPECT_EQ(d.points[1].x(), K::FT(1500.0));
+  EXPECT_EQ(d.points[1].y(), K::FT(123456789.123456789));
+}
+
+TEST(IO_read, PolyTolerates)
+{
+  using namespace qm2_test_io_read;
+  Domain d;
+  std::string err;
+  // CRLF, tabs, comments after data, missing optional header fields and markers, a trailing
+  // regional-attribute section.
+  std::istringstream s("# c\r\n3\r\n1\t0 0 # a\r\n2 1 0\r\n3 0 1\r\n\r\n3 1\r\n1 1 2 5\r\n2 2 3\r\n3 3 1\r\n0\r\n1\r\n1 0.2 0.2 7 0.1\r\n");
+  ASSERT_TRUE(QIO::read_poly(s, d, &err)) << err;
+  EXPECT_EQ(d.points.size(), 3u);
+  EXPECT_EQ(d.segments.size(), 3u);
+  EXPECT_TRUE(d.holes.empty());
+}
+
+TEST(IO_read, PolyWithZeroVerticesReadsTheNodeBesideIt)
+{
+  using namespace qm2_test_io_read;
+  const std::string full = square_with_hole_poly(1);
+  // Split into a .node (header + vertices) and a .poly with 0 vertices.
+  std::istringstream in(full);
+  std::string line, node, poly = "0 2 0 0\n";
+  int k = 0;
+  while(std::getline(in, line)) {
+    if(k < 10) node += line + "\n"; else poly += line + "\n";
+    ++k;
+  }
+  write_file("split.node", node);
+  const std::string pf = write_file("split.poly", poly);
+  Domain a, b;
+  std::string err;
+  std::istringstream sf(full);
+  ASSERT_TRUE(QIO::read_poly(sf, a, &err)) << err;
+  ASSERT_TRUE(QIO::read_poly(pf, b, &err)) << err;
+  EXPECT_TRUE(same_domain(a, b));
+
+  // Errors: the stream overload cannot find the .node; a missing .node; an error in the .node
+  // is reported against the .node.
+  std::istringstream sp(poly);
+  EXPECT_FALSE(QIO::read_poly(sp, b, &err));
+  EXPECT_NE(err.find("<stream>:1: "), std::string::npos) << err;
+  EXPECT_NE(err.find(".node"), std::string::npos) << err;
+  const std::string lone = write_file("lonely.poly", poly);
+  EXPECT_FALSE(QIO::read_poly(lone, b, &err));
+  EXPECT_TRUE(is_empty(b));
+  EXPECT_NE(err.find("lonely.node"), std::string::npos) << err;
+  const std::string bad_node = write_file("badnode.node", "2 2 0 0\n1 0 0\n2 x 1\n");
+  const std::string bad_poly = write_file("badnode.poly", "0 2 0 0\n1 0\n1 1 2\n0\n");
+  expect_error(QIO::read_poly(bad_poly, b, &err), b, err, bad_node, 3, "expected a number");
+}
+
+TEST(IO_read, PolySegmentIndicesOutOfRangeNamesTheCount)
+{
+  using namespace qm2_test_io_read;
+  Domain d;
+  std::string err;
+  const std::string f = write_file("lake.poly", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n2 0\n1 1 2\n2 2 600\n0\n");
+  expect_error(QIO::read_poly(f, d, &err), d, err, f, 7,
+               "segment 2 refers to vertex 600, but there are 3 vertices (1-based)");
+}
+
+TEST(IO_read, PolyMalformedCases)
+{
+  using namespace qm2_test_io_read;
+  // A valid triangle for reference: 3 vertices (lines 1-4), 3 segments (5-8), 0 holes (9).
+  const Bad_case cases[] = {
+    {"empty", "", 1, "empty file"},
+    {"only_comments", "# nothing\n\n# here\n", 3, "no data"},
+    {"truncated_vertices", "4 2 0 0\n1 0 0\n2 1 0\n", 3, "end of file"},
+    {"truncated_segments", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n3 0\n1 1 2\n2 2 3\n", 7, "end of file"},
+    {"missing_segment_header", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n", 4, "segment header is missing"},
+    {"missing_hole_header", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n3 0\n1 1 2\n2 2 3\n3 3 1\n", 8, "hole header is missing"},
+    {"truncated_holes", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n3 0\n1 1 2\n2 2 3\n3 3 1\n2\n1 0.2 0.2\n", 10, "end of file"},
+    {"negative_vertex_count", "-3 2 0 0\n", 1, "negative"},
+    {"negative_segment_count", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n-1 0\n", 5, "negative"},
+    {"negative_hole_count", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n-2\n", 6, "negative"},
+    {"fractional_count", "3.5 2 0 0\n", 1, "expected an integer"},
+    {"non_numeric_count", "three 2 0 0\n", 1, "expected an integer"},
+    {"dimension_3", "3 3 0 0\n1 0 0 0\n", 1, "dimension must be 2"},
+    {"bad_vertex_marker_count", "3 2 0 2\n", 1, "must be 0 or 1"},
+    {"header_garbage", "3 2 0 0 9\n", 1, "unexpected text"},
+    {"non_numeric_x", "3 2 0 0\n1 0 0\n2 abc 0\n3 0 1\n", 3, "expected a number for the x coordinate of vertex 2"},
+    {"non_numeric_y", "3 2 0 0\n1 0 0\n2 1 0x\n3 0 1\n", 3, "expected a number for the y coordinate"},
+    {"missing_y", "3 2 0 0\n1 0 0\n2 1\n3 0 1\n", 3, "only one coordinate"},
+    {"vertex_trailing_garbage", "3 2 0 0\n1 0 0\n2 1 0 junk\n3 0 1\n", 3, "unexpected text \"junk\""},
+    {"vertex_bad_marker", "3 2 0 1\n1 0 0 1\n2 1 0 a\n3 0 1 1\n", 3, "boundary marker"},
+    {"nan", "3 2 0 0\n1 0 0\n2 nan 0\n3 0 1\n", 3, "not finite"},
+    {"inf", "3 2 0 0\n1 0 0\n2 1 0\n3 0 -inf\n", 4, "not finite"},
+    {"infinity", "3 2 0 0\n1 0 0\n2 Infinity 0\n3 0 1\n", 3, "not finite"},
+    {"too_large", "3 2 0 0\n1 0 0\n2 1e151 0\n3 0 1\n", 3, "too large"},
+    {"overflow", "3 2 0 0\n1 0 0\n2 1 -1e400\n3 0 1\n", 3, "too large"},
+    {"first_index_5", "3 2 0 0\n5 0 0\n6 1 0\n7 0 1\n", 2, "must be 0 or 1"},
+    {"skipped_index", "3 2 0 0\n1 0 0\n2 1 0\n4 0 1\n", 4, "out of sequence"},
+    {"repeated_index", "3 2 0 0\n1 0 0\n1 1 0\n2 0 1\n", 3, "out of sequence"},
+    {"duplicate_point", "3 2 0 0\n1 0 0\n2 1 0\n3 0 0\n0 0\n0\n", 4,
+     "duplicate point: vertex 3 (line 4) and vertex 1 (line 2) are both at (0, 0)"},
+    {"segment_vertex_zero_in_1_based", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n1 0\n1 0 1\n0\n", 6, "refers to vertex 0"},
+    {"segment_vertex_3_in_0_based", "3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n1 0\n0 1 3\n0\n", 6, "3 vertices (0-based)"},
+    {"segment_non_numeric", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n1 0\n1 1 b\n0\n", 6, "expected an integer vertex index"},
+    {"segment_missing_end", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n1 0\n1 1\n0\n", 6, "two vertex indices"},
+    {"segment_trailing_garbage", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n1 0\n1 1 2 3\n0\n", 6, "unexpected text"},
+    {"segment_bad_marker_count", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n1 2\n", 5, "must be 0 or 1"},
+    {"segment_skipped_index", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n2 0\n1 1 2\n3 2 3\n0\n", 7, "out of sequence"},
+    {"zero_length_segment", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n2 0\n1 1 2\n2 3 3\n0\n", 7, "zero length"},
+    {"duplicate_segment", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n3 0\n1 1 2\n2 2 3\n3 2 1\n0\n", 8,
+     "duplicate segment: segment 3 (line 8) and segment 1 (line 6)"},
+    {"hole_non_numeric", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n1\n1 0.2 y\n", 7, "expected a number for the y coordinate of hole 1"},
+    {"hole_nan", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n1\n1 NaN 0.2\n", 7, "not finite"},
+    {"hole_trailing_garbage", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n1\n1 0.2 0.2 0.3\n", 7, "unexpected text"},
+  };
+  for(const Bad_case& c : cases) {
+    SCOPED_TRACE(c.name);
+    const std::string f = write_file(std::string(c.name) + ".poly", c.content);
+    Domain d;
+    d.points.push_back(Point_2(7, 7));  // must be cleared
+    std::string err;
+    expect_error(QIO::read_poly(f, d, &err), d, err, f, c.line, c.keyword);
+    // The stream overload gives the same message with the given source name.
+    std::istringstream in(c.content);
+    std::string err2;
+    EXPECT_FALSE(QIO::read_poly(in, d, &err2, "src.poly"));
+    EXPECT_EQ(err2.rfind("src.poly:" + std::to_string(c.line) + ": ", 0), 0u) << err2;
+    // A null error pointer is allowed.
+    std::istringstream in3(c.content);
+    EXPECT_FALSE(QIO::read_poly(in3, d));
+  }
+}
+
+TEST(IO_read, MissingFile)
+{
+  using namespace qm2_test_io_read;
+  const std::string f = (scratch_dir() / "does_not_exist.poly").string();
+  Domain d;
+  std::string err;
+  EXPECT_FALSE(QIO::read_poly(f, d, &err));
+  EXPECT_EQ(err.rfind(f + ": ", 0), 0u) << err;
+  EXPECT_NE(err.find("cannot open"), std::string::npos) << err;
+  for(const char* ext : {".node", ".xy", ".wkt"}) {
+    const std::string g = (scratch_dir() / (std::string("does_not_exist") + ext)).string();
+    err.clear();
+    EXPECT_FALSE(QIO::read_domain(g, d, &err));
+    EXPECT_NE(err.find(g + ": cannot open"), std::string::npos) << err;
+  }
+}
+
+TEST(IO_read, DuplicatePointsFoundQuicklyAmongMany)
+{
+  using namespace qm2_test_io_read;
+  // 200000 distinct points, the last equal to point 1234 (1-based): a quadratic search would
+  // be far too slow, and the message must name both.
+  std::ostringstream s;
+  const std::size_t n = 200000;
+  s << n << " 2 0 0\n";
+  for(std::size_t i = 1; i < n; ++i) s << i << " " << (i % 1000) << " " << (i / 1000) << "\n";
+  s << n << " " << (1234 % 1000) << " " << (1234 / 1000) << "\n0 0\n0\n";
+  std::istringstream in(s.str());
+  Domain d;
+  std::string err;
+  EXPECT_FALSE(QIO::read_poly(in, d, &err, "many.poly"));
+  EXPECT_EQ(err, "many.poly:200001: duplicate point: vertex 200000 (line 200001) and vertex 1234 (line 1235) are both at (234, 1)");
+}
+
+// ---------------------------------------------------------------------------------------------
+// .node and .xy
+
+TEST(IO_read, NodeFile)
+{
+  using namespace qm2_test_io_read;
+  Domain d;
+  std::string err;
+  const std::string ok = write_file("pts.node", "3 2 1 1\n0 0 0 9 1\n1 1 0 9 1\n2 0.5 2 9 0\n# Generated by hand\n");
+  ASSERT_TRUE(QIO::read_node(ok, d, &err)) << err;
+  EXPECT_EQ(d.points.size(), 3u);
+  EXPECT_TRUE(d.is_point_cloud());
+  EXPECT_EQ(d.points[2], Point_2(0.5, 2));
+
+  const Bad_case cases[] = {
+    {"n_empty", "", 1, "empty file"},
+    {"n_truncated", "3 2 0 0\n1 0 0\n2 1 0\n", 3, "end of file"},
+    {"n_zero", "0 2 0 0\n", 1, "no vertices"},
+    {"n_trailing", "2 2 0 0\n1 0 0\n2 1 0\n3 0 1\n", 4, "after the last vertex"},
+    {"n_dim", "2 1 0 0\n", 1, "dimension"},
+    {"n_dup", "2 2 0 0\n1 0 0\n2 0 0\n", 3, "duplicate point"},
+  };
+  for(const Bad_case& c : cases) {
+    SCOPED_TRACE(c.name);
+    const std::string f = write_file(std::string(c.name) + ".node", c.content);
+    expect_error(QIO::read_node(f, d, &err), d, err, f, c.line, c.keyword);
+  }
+}
+
+TEST(IO_read, XyFile)
+{
+  using namespace qm2_test_io_read;
+  Domain d;
+  std::string err;
+  std::istringstream in("# points\n1 2\n\n  3.5\t-4 # tab\n5 6 0\n5 7 0.0\n");
+  ASSERT_TRUE(QIO::read_xy(in, d, &err)) << err;
+  ASSERT_EQ(d.points.size(), 4u);
+  EXPECT_EQ(d.points[1], Point_2(3.5, -4));
+  EXPECT_TRUE(d.segments.empty());
+  EXPECT_TRUE(d.holes.empty());
+
+  const Bad_case cases[] = {
+    {"x_empty", "", 1, "empty file"},
+    {"x_comments", "# a\n# b\n", 2, "no data"},
+    {"x_one_column", "1 2\n3\n", 2, "only one coordinate"},
+    {"x_third_nonzero", "1 2\n3 4 5\n", 2, "third coordinate"},
+    {"x_third_text", "1 2\n3 4 abc\n", 2, "unexpected text"},
+    {"x_four_columns", "1 2 0 0\n", 1, "unexpected text"},
+    {"x_non_numeric", "1 2\n3 4\nx 5\n", 3, "expected a number for the x coordinate"},
+    {"x_nan", "1 2\n3 -nan\n", 2, "not finite"},
+    {"x_large", "1 2\n-2e150 4\n", 2, "too large"},
+    {"x_dup", "1 2\n3 4\n5 6\n3 4\n", 4, "duplicate point: point 4 (line 4) and point 2 (line 2)"},
+  };
+  for(const Bad_case& c : cases) {
+    SCOPED_TRACE(c.name);
+    const std::string f = write_file(std::string(c.name) + ".xy", c.content);
+    expect_error(QIO::read_xy(f, d, &err), d, err, f, c.line, c.keyword);
+  }
+}
+
+TEST(IO_read, MillionPointsReadFast)
+{
+  using namespace qm2_test_io_read;
+  std::string text;
+  const std::size_t n = 1000000;
+  text.reserve(n * 24);
+  char buf[64];
+  for(std::size_t i = 0; i < n; ++i) {
+    std::snprintf(buf, sizeof(buf), "%.9g %.9g\n", (i % 1000) * 0.001 + 1e-7 * (i / 1000), (i / 1000) * 0.37);
+    text += buf;
+  }
+  const std::string f = write_file("million.xy", text);
+  Domain d;
+  std::string err;
+  const auto t0 = std::chrono::steady_clock::now();
+  ASSERT_TRUE(QIO::read_xy(f, d, &err)) << err;
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_EQ(d.points.size(), n);
+  RecordProperty("seconds", std::to_string(seconds));
+  EXPECT_LT(seconds, 10.0) << "reading 10^6 points took " << seconds << " s";
+  fs::remove(f);
+}
+
+// ---------------------------------------------------------------------------------------------
+// WKT
+
+TEST(IO_read, WktPolygonWithHoleGetsASeedInsideTheHole)
+{
+  using namespace qm2_test_io_read;
+  // An L-shaped hole: its centroid (about (3.9, 3.9)) lies outside it.
+  const std::string wkt = "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0),\n"
+                          "         (1 1, 1 9, 2 9, 2 2, 9 2, 9 1, 1 1))\n";
+  Domain d;
+  std::string err;
+  std::istringstream in(wkt);
+  ASSERT_TRUE(QIO::read_WKT(in, d, &err)) << err;
+  EXPECT_EQ(d.points.size(), 10u);
+  EXPECT_EQ(d.segments.size(), 10u);
+  ASSERT_EQ(d.holes.size(), 1u);
+  const std::vector<Point_2> outer = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  const std::vector<Point_2> hole = {{1, 1}, {1, 9}, {2, 9}, {2, 2}, {9, 2}, {9, 1}};
+  EXPECT_EQ(CGAL::bounded_side_2(hole.begin(), hole.end(), d.holes[0], K()), CGAL::ON_BOUNDED_SIDE);
+  EXPECT_EQ(CGAL::bounded_side_2(outer.begin(), outer.end(), d.holes[0], K()), CGAL::ON_BOUNDED_SIDE);
+  // Every ring is a closed chain.
+  std::vector<int> degree(d.points.size(), 0);
+  for(const auto& s : d.segments) { ++degree[s[0]]; ++degree[s[1]]; }
+  for(int deg : degree) EXPECT_EQ(deg, 2);
+}
+
+TEST(IO_read, WktHoleSeedAvoidsIslandsInTheHole)
+{
+  using namespace qm2_test_io_read;
+  // A land polygon with a lake; an island polygon fills most of the lake.
+  const std::string wkt = "MULTIPOLYGON (((0 0, 10 0, 10 10, 0 10, 0 0), (2 2, 2 8, 8 8, 8 2, 2 2)),\n"
+                          "              ((2.5 2.5, 7.5 2.5, 7.5 7.5, 2.5 7.5, 2.5 2.5)))";
+  Domain d;
+  std::string err;
+  std::istringstream in(wkt);
+  ASSERT_TRUE(QIO::read_WKT(in, d, &err)) << err;
+  EXPECT_EQ(d.points.size(), 12u);
+  EXPECT_EQ(d.segments.size(), 12u);
+  ASSERT_EQ(d.holes.size(), 1u);
+  const std::vector<Point_2> lake = {{2, 2}, {2, 8}, {8, 8}, {8, 2}};
+  const std::vector<Point_2> island = {{2.5, 2.5}, {7.5, 2.5}, {7.5, 7.5}, {2.5, 7.5}};
+  EXPECT_EQ(CGAL::bounded_side_2(lake.begin(), lake.end(), d.holes[0], K()), CGAL::ON_BOUNDED_SIDE);
+  EXPECT_EQ(CGAL::bounded_side_2(island.begin(), island.end(), d.holes[0], K()), CGAL::ON_UNBOUNDED_SIDE);
+}
+
+TEST(IO_read, WktManyHolesAndTouchingRings)
+{
+  using namespace qm2_test_io_read;
+  // Thin triangular holes (seed must be strictly inside each) and a hole touching the outer
+  // ring at a vertex (the vertex is shared). Unclosed rings are accepted.
+  const std::string wkt = "polygon((0 0, 100 0, 100 100, 0 100),"
+                          " (10 10, 90 10.001, 10 10.002),"
+                          " (0 100, 10 80, 20 90, 0 100),"
+                          " (50 50, 50.000001 50, 50 50.000001, 50 50))";
+  Domain d;
+  std::string err;
+  std::istringstream in(wkt);
+  ASSERT_TRUE(QIO::read_WKT(in, d, &err)) << err;
+  EXPECT_EQ(d.points.size(), 4u + 3 + 2 + 3);
+  EXPECT_EQ(d.segments.size(), 4u + 3 + 3 + 3);
+  ASSERT_EQ(d.holes.size(), 3u);
+  const std::vector<std::vector<Point_2> > holes = {
+    {{10, 10}, {90, 10.001}, {10, 10.002}}, {{0, 100}, {10, 80}, {20, 90}}, {{50, 50}, {50.000001, 50}, {50, 50.000001}}};
+  for(std::size_t i = 0; i < 3; ++i)
+    EXPECT_EQ(CGAL::bounded_side_2(holes[i].begin(), holes[i].end(), d.holes[i], K()), CGAL::ON_BOUNDED_SIDE) << i;
+}
+
+TEST(IO_read, WktPointCloud)
+{
+  using namespace qm2_test_io_read;
+  std::istringstream in("MULTIPOINT ((0 0), (1 0), 2 2)\nPOINT (3 3)\nPOINT EMPTY\n");
+  Domain d;
+  std::string err;
+  ASSERT_TRUE(QIO::read_WKT(in, d, &err)) << err;
+  EXPECT_EQ(d.points.size(), 4u);
+  EXPECT_TRUE(d.is_point_cloud());
+  EXPECT_TRUE(d.holes.empty());
+}
+
+TEST(IO_read, WktMalformedCases)
+{
+  using namespace qm2_test_io_read;
+  const Bad_case cases[] = {
+    {"w_empty", "", 1, "empty file"},
+    {"w_blank", "\n\n", 3, "no WKT geometry"},
+    {"w_unsupported", "\nLINESTRING (0 0, 1 1)", 2, "unsupported WKT geometry type"},
+    {"w_z", "POLYGON Z ((0 0 0, 1 0 0, 0 1 0, 0 0 0))", 1, "only 2D"},
+    {"w_third_coordinate", "POLYGON ((0 0, 1 0 5, 0 1, 0 0))", 1, "only 2D"},
+    {"w_non_numeric", "POLYGON ((0 0,\n1 zero, 0 1, 0 0))", 2, "expected a number for the y coordinate"},
+    {"w_nan", "POINT (nan 1)", 1, "not finite"},
+    {"w_large", "POINT (1 1e200)", 1, "too large"},
+    {"w_truncated", "POLYGON ((0 0, 1 0,\n 0 1", 2, "end of file"},
+    {"w_missing_paren", "POLYGON ((0 0, 1 0, 0 1, 0 0)", 1, "expected ')'"},
+    {"w_two_vertices", "POLYGON ((0 0, 1 0, 0 0))", 1, "at least 3"},
+    {"w_not_simple", "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0),\n(2 2, 8 8, 2 8, 8 2, 2 2))", 2, "not simple"},
+    {"w_collinear", "POLYGON ((0 0, 1 0, 2 0, 0 0))", 1, "not simple"},
+    {"w_repeated_vertex", "POLYGON ((0 0, 4 0, 2 2, 4 4, 0 4, 2 2, 0 0))", 1, "duplicate point"},
+    {"w_zero_length_edge", "POLYGON ((0 0, 1 0, 1 0, 0 1, 0 0))", 1, "zero-length"},
+    {"w_duplicate_points", "MULTIPOINT (0 0, 1 1)\nPOINT (1 1)", 2, "duplicate point"},
+    {"w_point_on_ring_vertex", "POLYGON ((0 0, 1 0, 0 1, 0 0))\nPOINT (1 0)", 2, "already a ring vertex"},
+    {"w_shared_edge", "MULTIPOLYGON (((0 0, 1 0, 1 1, 0 1, 0 0)),\n((1 0, 2 0, 2 1, 1 1, 1 0)))", 2, "duplicate segment"},
+    {"w_garbage_after", "POINT (1 1) )", 1, "expected a WKT geometry keyword"},
+  };
+  for(const Bad_case& c : cases) {
+    SCOPED_TRACE(c.name);
+    const std::string f = write_file(std::string(c.name) + ".wkt", c.content);
+    Domain d;
+    std::string err;
+    expect_error(QIO::read_WKT(f, d, &err), d, err, f, c.line, c.keyword);
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// read_domain
+
+TEST(IO_read, ReadDomainDispatchesByExtension)
+{
+  using namespace qm2_test_io_read;
+  Domain d;
+  std::string err;
+  const std::string poly = write_file("disp.POLY", square_with_hole_poly(1));
+  ASSERT_TRUE(QIO::read_domain(poly, d, &err)) << err;
+  EXPECT_EQ(d.segments.size(), 8u);
+  EXPECT_EQ(d.holes.size(), 1u);
+
+  const std::string node = write_file("disp.node", "2 2 0 0\n1 0 0\n2 1 1\n");
+  ASSERT_TRUE(QIO::read_domain(node, d, &err)) << err;
+  EXPECT_EQ(d.points.size(), 2u);
+
+  for(const char* ext : {".xy", ".txt", ".pts", ".dat"}) {
+    const std::string xy = write_file(std::string("disp") + ext, "0 0\n1 1\n2 0\n");
+    ASSERT_TRUE(QIO::read_domain(xy, d, &err)) << err;
+    EXPECT_EQ(d.points.size(), 3u) << ext;
+    EXPECT_TRUE(d.is_point_cloud());
+    // The .xy reader rejects what the .poly reader would need: a header-looking first line
+    // "3 2 0 0" is 4 columns.
+    const std::string bad = write_file(std::string("dispbad") + ext, "3 2 0 0\n");
+    EXPECT_FALSE(QIO::read_domain(bad, d, &err));
+    EXPECT_NE(err.find(bad + ":1: unexpected text"), std::string::npos) << err;
+  }
+
+  const std::string wkt = write_file("disp.wkt", "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 1 3, 3 3, 3 1, 1 1))");
+  ASSERT_TRUE(QIO::read_domain(wkt, d, &err)) << err;
+  EXPECT_EQ(d.points.size(), 8u);
+  EXPECT_EQ(d.holes.size(), 1u);
+
+  for(const char* name : {"disp.off", "disp", "dir.poly/disp"}) {
+    const std::string f = write_file(name == std::string("dir.poly/disp") ? "disp_noext" : name, "1 2\n");
+    const std::string path = name == std::string("dir.poly/disp") ? (scratch_dir() / "dir.poly" / "disp").string() : f;
+    d.points.push_back(Point_2(1, 1));
+    err.clear();
+    EXPECT_FALSE(QIO::read_domain(path, d, &err));
+    EXPECT_TRUE(is_empty(d));
+    EXPECT_EQ(err.rfind(path + ": unknown file extension", 0), 0u) << err;
+  }
+}
