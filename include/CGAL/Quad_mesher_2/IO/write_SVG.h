@@ -1,0 +1,238 @@
+// Copyright (c) 2026 Quad_mesher_2 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Quad_mesher_2 developers
+
+#ifndef CGAL_QUAD_MESHER_2_IO_WRITE_SVG_H
+#define CGAL_QUAD_MESHER_2_IO_WRITE_SVG_H
+
+#include <CGAL/Quad_mesher_2/Quad_mesh_2.h>
+#include <CGAL/Quad_mesher_2/internal/quad_geometry.h>
+#include <CGAL/Quad_mesher_2/internal/write_common.h>
+
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdio>
+#include <iomanip>
+#include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Quad_mesher_2 {
+namespace IO {
+namespace internal {
+
+/// Number of colour classes for angle deviations in [0, 45] degrees (one per degree);
+/// class `svg_bad_class` is for quads with an angle outside [45, 135].
+constexpr int svg_ok_classes = 46;
+constexpr int svg_bad_class = svg_ok_classes;
+
+/// Colour class of a quad whose largest |angle - 90| is `deviation` degrees.
+inline int svg_colour_class(double deviation)
+{
+  if(!(deviation <= 45.0 + 1e-7))
+    return svg_bad_class;
+  return (std::min)(int(std::lround(deviation)), svg_ok_classes - 1);
+}
+
+/// `#rrggbb` of a colour class: hue from green (120, deviation 0) through yellow to orange
+/// (30, deviation 45); red for `svg_bad_class`.
+inline std::string svg_colour(int c)
+{
+  double hue = 0, sat = 0.85, light = 0.5;
+  if(c != svg_bad_class)
+    hue = 120.0 - 90.0 * double(c) / double(svg_ok_classes - 1);
+  else
+    light = 0.45;
+  // HSL to RGB.
+  const double chroma = (1 - std::abs(2 * light - 1)) * sat;
+  const double hp = hue / 60.0;
+  const double x = chroma * (1 - std::abs(std::fmod(hp, 2.0) - 1));
+  double r = 0, g = 0, b = 0;
+  if(hp < 1) { r = chroma; g = x; }
+  else if(hp < 2) { r = x; g = chroma; }
+  else { g = chroma; b = x; }
+  const double mm = light - chroma / 2;
+  char buf[8];
+  auto to8 = [](double v) { return int(std::lround((std::min)(1.0, (std::max)(0.0, v)) * 255)); };
+  std::snprintf(buf, sizeof(buf), "#%02x%02x%02x", to8(r + mm), to8(g + mm), to8(b + mm));
+  return std::string(buf);
+}
+
+} // namespace internal
+
+/// \ingroup PkgQuadMesher2IO
+/// Draws `mesh` as an SVG picture and, on top of it in blue, the `segments` (for instance the
+/// input domain's boundary). Each quad is one `<polygon>`, filled with a colour given by its
+/// worst corner angle: green when every angle is 90 degrees, shading through yellow to orange
+/// as the worst angle approaches 45 or 135 degrees, red when some angle lies outside
+/// [45, 135] (inverted and non-convex quads included). Edges are thin dark lines whose width
+/// is proportional to the mean edge length. The y axis points up; the picture is scaled so
+/// that the larger side of the bounding box measures 1000 units, the `viewBox` fits the
+/// bounding box plus a margin and a small colour legend below it. Coordinates are written
+/// with 6 significant digits to keep files small (~100 bytes per quad).
+/// Returns `false`, without throwing, if the stream fails or a quad index is out of range.
+template <class Point_2>
+bool write_SVG(std::ostream& os, const Quad_mesh_2<Point_2>& mesh,
+               const std::vector<std::pair<Point_2, Point_2>>& segments)
+{
+  using Q_internal_point = Quad_mesher_2::internal::Point_2d;
+  if(!Quad_mesher_2::internal::quad_indices_in_range(mesh))
+    return false;
+  return Quad_mesher_2::internal::guarded_write(os, [&](std::ostream& out) {
+    std::vector<Q_internal_point> pts;
+    pts.reserve(mesh.points.size());
+    for(const Point_2& p : mesh.points)
+      pts.push_back(Quad_mesher_2::internal::to_point_2d(p));
+    std::vector<std::array<Q_internal_point, 2>> segs;
+    segs.reserve(segments.size());
+    for(const auto& s : segments)
+      segs.push_back({Quad_mesher_2::internal::to_point_2d(s.first),
+                      Quad_mesher_2::internal::to_point_2d(s.second)});
+
+    // Bounding box of the quads' vertices and the segments.
+    bool empty = true;
+    double xmin = 0, ymin = 0, xmax = 0, ymax = 0;
+    auto add = [&](const Q_internal_point& p) {
+      if(empty) {
+        xmin = xmax = p.x;
+        ymin = ymax = p.y;
+        empty = false;
+      } else {
+        xmin = (std::min)(xmin, p.x);
+        xmax = (std::max)(xmax, p.x);
+        ymin = (std::min)(ymin, p.y);
+        ymax = (std::max)(ymax, p.y);
+      }
+    };
+    for(const auto& q : mesh.quads)
+      for(std::size_t v : q)
+        add(pts[v]);
+    for(const auto& s : segs) {
+      add(s[0]);
+      add(s[1]);
+    }
+    const double extent = (std::max)(xmax - xmin, ymax - ymin);
+    const double scale = extent > 0 ? 1000.0 / extent : 1.0;
+    auto X = [&](const Q_internal_point& p) { return (p.x - xmin) * scale; };
+    auto Y = [&](const Q_internal_point& p) { return (ymax - p.y) * scale; };
+    const double width = (xmax - xmin) * scale, height = (ymax - ymin) * scale;
+
+    // Stroke width: a twentieth of the mean edge length.
+    double sum_len = 0;
+    std::size_t n_len = 0;
+    for(const auto& q : mesh.quads)
+      for(int k = 0; k < 4; ++k) {
+        sum_len += Quad_mesher_2::internal::length_2d(
+          Quad_mesher_2::internal::minus_2d(pts[q[(k + 1) % 4]], pts[q[k]]));
+        ++n_len;
+      }
+    double stroke = n_len > 0 ? 0.05 * sum_len * scale / double(n_len) : 1.0;
+    stroke = (std::min)(2.0, (std::max)(1e-3, stroke));
+
+    // Colour class of every quad, and the quads grouped by class.
+    std::vector<std::vector<std::size_t>> by_class(internal::svg_bad_class + 1);
+    for(std::size_t i = 0; i < mesh.quads.size(); ++i) {
+      const auto& q = mesh.quads[i];
+      const std::array<Q_internal_point, 4> g = {pts[q[0]], pts[q[1]], pts[q[2]], pts[q[3]]};
+      by_class[internal::svg_colour_class(Quad_mesher_2::internal::quad_max_angle_deviation(g))]
+        .push_back(i);
+    }
+
+    const double margin = 20, legend_h = 60, legend_w = 760;
+    const double vb_w = (std::max)(width, legend_w) + 2 * margin;
+    const double vb_h = height + 2 * margin + legend_h;
+    out << std::setprecision(6);
+    out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+        << "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" << vb_w
+        << "\" height=\"" << vb_h << "\" viewBox=\"" << -margin << ' ' << -margin << ' ' << vb_w
+        << ' ' << vb_h << "\">\n"
+        << "<title>" << mesh.quads.size() << " quads, " << mesh.points.size() << " vertices</title>\n"
+        << "<style>";
+    for(int c = 0; c <= internal::svg_bad_class; ++c)
+      if(!by_class[c].empty() || c == 0 || c == 23 || c == 45 || c == internal::svg_bad_class)
+        out << ".c" << c << "{fill:" << internal::svg_colour(c) << "}";
+    out << "</style>\n";
+
+    out << "<g stroke=\"#222222\" stroke-width=\"" << stroke << "\" stroke-linejoin=\"round\">\n";
+    for(int c = 0; c <= internal::svg_bad_class; ++c) {
+      if(by_class[c].empty())
+        continue;
+      out << "<g class=\"c" << c << "\">\n";
+      for(std::size_t i : by_class[c]) {
+        const auto& q = mesh.quads[i];
+        out << "<polygon points=\"";
+        for(int k = 0; k < 4; ++k)
+          out << (k ? " " : "") << X(pts[q[k]]) << ',' << Y(pts[q[k]]);
+        out << "\"/>\n";
+      }
+      out << "</g>\n";
+    }
+    out << "</g>\n";
+
+    if(!segs.empty()) {
+      out << "<path fill=\"none\" stroke=\"#1f5fd6\" stroke-width=\"" << 3 * stroke
+          << "\" stroke-linecap=\"round\" d=\"";
+      for(const auto& s : segs)
+        out << 'M' << X(s[0]) << ',' << Y(s[0]) << 'L' << X(s[1]) << ',' << Y(s[1]);
+      out << "\"/>\n";
+    }
+
+    // Legend below the picture.
+    const double ly = height + margin;
+    const char* labels[] = {"90&#176;", "67.5&#176; / 112.5&#176;", "45&#176; / 135&#176;",
+                            "outside [45&#176;, 135&#176;]"};
+    const int classes[] = {0, 23, 45, internal::svg_bad_class};
+    out << "<g font-family=\"sans-serif\" font-size=\"16\" stroke=\"#222222\" stroke-width=\"0.5\">\n";
+    for(int i = 0; i < 4; ++i) {
+      const double lx = 190.0 * i;
+      out << "<rect class=\"c" << classes[i] << "\" x=\"" << lx << "\" y=\"" << ly
+          << "\" width=\"20\" height=\"20\"/>"
+          << "<text stroke=\"none\" fill=\"#222222\" x=\"" << lx + 26 << "\" y=\"" << ly + 16
+          << "\">" << labels[i] << "</text>\n";
+    }
+    out << "<text stroke=\"none\" fill=\"#222222\" x=\"0\" y=\"" << ly + 44
+        << "\">colour: worst corner angle of each quad</text>\n</g>\n";
+    out << "</svg>\n";
+    return out.good();
+  });
+}
+
+/// \ingroup PkgQuadMesher2IO
+/// Draws `mesh` as an SVG picture (see the overload with segments).
+template <class Point_2>
+bool write_SVG(std::ostream& os, const Quad_mesh_2<Point_2>& mesh)
+{
+  return CGAL::Quad_mesher_2::IO::write_SVG(os, mesh, std::vector<std::pair<Point_2, Point_2>>());
+}
+
+/// \ingroup PkgQuadMesher2IO
+/// Writes the SVG picture of `mesh` and `segments` to the file `filename`.
+/// Returns `false` if the file cannot be written.
+template <class Point_2>
+bool write_SVG(const std::string& filename, const Quad_mesh_2<Point_2>& mesh,
+               const std::vector<std::pair<Point_2, Point_2>>& segments)
+{
+  return Quad_mesher_2::internal::write_to_file(
+    filename, [&](std::ostream& os) { return CGAL::Quad_mesher_2::IO::write_SVG(os, mesh, segments); });
+}
+
+/// \ingroup PkgQuadMesher2IO
+/// Writes the SVG picture of `mesh` to the file `filename`.
+/// Returns `false` if the file cannot be written.
+template <class Point_2>
+bool write_SVG(const std::string& filename, const Quad_mesh_2<Point_2>& mesh)
+{
+  return CGAL::Quad_mesher_2::IO::write_SVG(filename, mesh, std::vector<std::pair<Point_2, Point_2>>());
+}
+
+} // namespace IO
+} // namespace Quad_mesher_2
+} // namespace CGAL
+
+#endif // CGAL_QUAD_MESHER_2_IO_WRITE_SVG_H
