@@ -236,13 +236,14 @@ std::size_t count_hanging_nodes(const std::vector<Point_2d>& pts,
         continue;
       const Point_2d& a = pts[src(e)];
       const Point_2d d = minus_2d(pts[tgt(e)], a);
-      const double len = length_2d(d);
-      if(!(len > 2 * tol))
-        continue;
       const Point_2d ap = minus_2d(p, a);
+      const double len2 = dot_2d(d, d);
+      const double cr = cross_2d(d, ap);
+      if(cr * cr > tol * tol * len2) // farther than tol from the line: the common case
+        continue;
+      const double len = std::sqrt(len2);
       const double along = dot_2d(ap, d) / len;
-      const double across = std::abs(cross_2d(d, ap)) / len;
-      if(across <= tol && along > tol && along < len - tol) {
+      if(len > 2 * tol && along > tol && along < len - tol) {
         ++count;
         break;
       }
@@ -389,14 +390,12 @@ Mesh_quality_2 compute_quality(const Quad_mesh_2<Point_2>& mesh)
 
   // Duplicate vertices: sort by coordinates.
   {
-    std::vector<std::size_t> order(np);
-    for(std::size_t i = 0; i < np; ++i)
-      order[i] = i;
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return pts[a].x < pts[b].x || (pts[a].x == pts[b].x && pts[a].y < pts[b].y);
+    std::vector<Point_2d> sorted(pts);
+    std::sort(sorted.begin(), sorted.end(), [](const Point_2d& a, const Point_2d& b) {
+      return a.x < b.x || (a.x == b.x && a.y < b.y);
     });
     for(std::size_t i = 1; i < np; ++i)
-      if(pts[order[i]].x == pts[order[i - 1]].x && pts[order[i]].y == pts[order[i - 1]].y)
+      if(sorted[i].x == sorted[i - 1].x && sorted[i].y == sorted[i - 1].y)
         ++r.number_of_duplicate_vertices;
   }
 
@@ -483,7 +482,7 @@ Mesh_quality_2 compute_quality(const Quad_mesh_2<Point_2>& mesh)
   }
 
   // Hanging nodes: used vertices in the interior of a used-once edge of another quad.
-  const double diag = std::hypot(hi.x - lo.x, hi.y - lo.y);
+  const double diag = internal::length_2d(internal::minus_2d(hi, lo));
   r.number_of_hanging_nodes =
     internal::count_hanging_nodes(pts, used, mesh.quads, boundary, lo, hi, 1e-9 * diag);
 

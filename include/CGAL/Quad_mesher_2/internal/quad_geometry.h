@@ -36,7 +36,7 @@ inline Point_2d to_point_2d(const Point_2& p)
 inline double cross_2d(const Point_2d& a, const Point_2d& b) { return a.x * b.y - a.y * b.x; }
 inline double dot_2d(const Point_2d& a, const Point_2d& b) { return a.x * b.x + a.y * b.y; }
 inline Point_2d minus_2d(const Point_2d& a, const Point_2d& b) { return Point_2d{a.x - b.x, a.y - b.y}; }
-inline double length_2d(const Point_2d& a) { return std::hypot(a.x, a.y); }
+inline double length_2d(const Point_2d& a) { return std::sqrt(a.x * a.x + a.y * a.y); }
 
 /// Interior angle in degrees, in [0, 360), at corner `p` of a counter-clockwise polygon whose
 /// previous and next vertices are `prev` and `next`: the angle swept counter-clockwise from
