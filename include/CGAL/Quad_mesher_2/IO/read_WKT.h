@@ -207,8 +207,8 @@ private:
   bool point_body()
   {
     if(!expect('(', "after POINT")) return false;
-    std::array<double, 2> p;
-    std::size_t line;
+    std::array<double, 2> p = {0, 0};
+    std::size_t line = 0;
     if(!coordinate(p, line)) return false;
     if(!expect(')', "after the coordinates of POINT")) return false;
     m_data.points.push_back(p);
@@ -222,8 +222,8 @@ private:
     do {
       if(is_empty_keyword()) continue;
       const bool paren = m_lex.accept('(');
-      std::array<double, 2> p;
-      std::size_t line;
+      std::array<double, 2> p = {0, 0};
+      std::size_t line = 0;
       if(!coordinate(p, line)) return false;
       if(paren && !expect(')', "after a point of MULTIPOINT")) return false;
       m_data.points.push_back(p);
@@ -237,8 +237,8 @@ private:
     r.line = m_lex.line();
     if(!expect('(', "to open a ring")) return false;
     do {
-      std::array<double, 2> p;
-      std::size_t line;
+      std::array<double, 2> p = {0, 0};
+      std::size_t line = 0;
       if(!coordinate(p, line)) return false;
       r.xy.push_back(p);
       r.lines.push_back(line);
@@ -408,7 +408,7 @@ bool wkt_to_domain(Wkt_data& data, const std::string& source, Domain_2<K>& out, 
   for(std::size_t ri = 0; ri < data.rings.size(); ++ri) {
     Wkt_ring& r = data.rings[ri];
     if(r.xy.size() >= 2 && r.xy.front() == r.xy.back()) { r.xy.pop_back(); r.lines.pop_back(); }
-    std::size_t a, b;
+    std::size_t a = 0, b = 0;
     if(find_duplicate_point(r.xy, a, b)) {
       if(b == a + 1 || (a == 0 && b + 1 == r.xy.size())) {
         msg = where(r.lines[b]) + r.describe() + " has a zero-length edge: vertex " + format_point(r.xy[b][0], r.xy[b][1]) +
@@ -463,7 +463,7 @@ bool wkt_to_domain(Wkt_data& data, const std::string& source, Domain_2<K>& out, 
     xy.push_back(data.points[i]);
     lines.push_back(data.point_lines[i]);
   }
-  std::size_t d1, d2;
+  std::size_t d1 = 0, d2 = 0;
   if(find_duplicate_segment(segs, d1, d2)) {
     const auto& s = segs[d2];
     msg = where(seg_lines[d2]) + "duplicate segment: the edge from " + format_point(xy[s[0]][0], xy[s[0]][1]) + " to " +

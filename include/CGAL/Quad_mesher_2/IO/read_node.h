@@ -344,7 +344,7 @@ inline bool read_vertex_section(Text_lines& r, Vertex_list& out, long long& coun
             ") announces " + std::to_string(n) + " vertices, but only " + std::to_string(i) + " were found";
       return false;
     }
-    long long idx;
+    long long idx = 0;
     if(!parse_integer(r[0], idx)) { msg = r.here() + "expected an integer vertex index, found " + quote(r[0]); return false; }
     if(i == 0) {
       if(idx != 0 && idx != 1) { msg = r.here() + "the first vertex index must be 0 or 1, found " + std::string(r[0]); return false; }
@@ -356,7 +356,7 @@ inline bool read_vertex_section(Text_lines& r, Vertex_list& out, long long& coun
     }
     auto label = [&]() { return "vertex " + std::to_string(i + out.base); };
     if(r.size() < 3) { msg = r.here() + label() + " has " + (r.size() == 1 ? "no coordinates" : "only one coordinate") + " (expected: index x y)"; return false; }
-    double x, y;
+    double x = 0, y = 0;
     std::string problem;
     if(!read_coordinate(r[1], x, problem, [&]() { return "the x coordinate of " + label(); }) ||
        !read_coordinate(r[2], y, problem, [&]() { return "the y coordinate of " + label(); })) {
@@ -373,7 +373,7 @@ inline bool read_vertex_section(Text_lines& r, Vertex_list& out, long long& coun
     for(std::size_t t = 3; t < r.size(); ++t) {
       double dummy;
       const bool is_marker = (nmark == 1 && t == max_tokens - 1);
-      long long m;
+      long long m = 0;
       if(is_marker ? !parse_integer(r[t], m) : !parse_double(r[t], dummy)) {
         msg = r.here() + "expected " + (is_marker ? "an integer boundary marker" : "a number for an attribute") + " of " + label() +
               ", found " + quote(r[t]);
@@ -388,7 +388,7 @@ inline bool read_vertex_section(Text_lines& r, Vertex_list& out, long long& coun
 
 inline bool check_duplicate_vertices(const Vertex_list& v, std::string& msg)
 {
-  std::size_t a, b;
+  std::size_t a = 0, b = 0;
   if(find_duplicate_point(v.xy, a, b)) {
     msg = v.source + ":" + std::to_string(v.lines[b]) + ": duplicate point: vertex " + std::to_string(b + v.base) +
           " (line " + std::to_string(v.lines[b]) + ") and vertex " + std::to_string(a + v.base) + " (line " +

@@ -71,7 +71,7 @@ bool read_poly_text(Text_lines& r, const std::string& node_file, Domain_2<K>& ou
             ") announces " + std::to_string(ns) + " segments, but only " + std::to_string(i) + " were found";
       return false;
     }
-    long long idx;
+    long long idx = 0;
     if(!parse_integer(r[0], idx)) { msg = r.here() + "expected an integer segment index, found " + quote(r[0]); return false; }
     if(i == 0) {
       if(idx != 0 && idx != 1) { msg = r.here() + "the first segment index must be 0 or 1, found " + std::string(r[0]); return false; }
@@ -84,7 +84,7 @@ bool read_poly_text(Text_lines& r, const std::string& node_file, Domain_2<K>& ou
     if(r.size() < 3) { msg = r.here() + "segment " + std::string(r[0]) + " needs two vertex indices (expected: index a b)"; return false; }
     std::array<std::size_t, 2> s;
     for(int e = 0; e < 2; ++e) {
-      long long a;
+      long long a = 0;
       if(!parse_integer(r[1 + e], a)) {
         msg = r.here() + "expected an integer vertex index in segment " + std::string(r[0]) + ", found " + quote(r[1 + e]);
         return false;
@@ -101,7 +101,7 @@ bool read_poly_text(Text_lines& r, const std::string& node_file, Domain_2<K>& ou
             std::to_string(nmark) + " marker(s))";
       return false;
     }
-    long long m;
+    long long m = 0;
     if(r.size() == 4 && !parse_integer(r[3], m)) {
       msg = r.here() + "expected an integer boundary marker of segment " + std::string(r[0]) + ", found " + quote(r[3]);
       return false;
@@ -113,7 +113,7 @@ bool read_poly_text(Text_lines& r, const std::string& node_file, Domain_2<K>& ou
     segs.push_back(s);
     seg_lines.push_back(r.line());
   }
-  std::size_t d1, d2;
+  std::size_t d1 = 0, d2 = 0;
   if(find_duplicate_segment(segs, d1, d2)) {
     msg = r.where(seg_lines[d2]) + "duplicate segment: segment " + std::to_string(d2 + seg_base) + " (line " +
           std::to_string(seg_lines[d2]) + ") and segment " + std::to_string(d1 + seg_base) + " (line " +
@@ -138,7 +138,7 @@ bool read_poly_text(Text_lines& r, const std::string& node_file, Domain_2<K>& ou
             ") announces " + std::to_string(nh) + " holes, but only " + std::to_string(i) + " were found";
       return false;
     }
-    long long idx;
+    long long idx = 0;
     if(!parse_integer(r[0], idx)) { msg = r.here() + "expected an integer hole index, found " + quote(r[0]); return false; }
     if(i == 0) {
       if(idx != 0 && idx != 1) { msg = r.here() + "the first hole index must be 0 or 1, found " + std::string(r[0]); return false; }
@@ -149,7 +149,7 @@ bool read_poly_text(Text_lines& r, const std::string& node_file, Domain_2<K>& ou
       return false;
     }
     if(r.size() < 3) { msg = r.here() + "hole " + std::string(r[0]) + " needs two coordinates (expected: index x y)"; return false; }
-    double x, y;
+    double x = 0, y = 0;
     std::string problem;
     if(!read_coordinate(r[1], x, problem, [&]() { return "the x coordinate of hole " + std::string(r[0]); }) ||
        !read_coordinate(r[2], y, problem, [&]() { return "the y coordinate of hole " + std::string(r[0]); })) {

@@ -67,7 +67,7 @@ bool read_xy_impl(std::string&& text, const std::string& source, Domain_2<K>& ou
       ok = false;
     }
     if(ok) {
-      std::size_t a, b;
+      std::size_t a = 0, b = 0;
       if(find_duplicate_point(v.xy, a, b)) {
         msg = r.where(v.lines[b]) + "duplicate point: point " + std::to_string(b + 1) + " (line " + std::to_string(v.lines[b]) +
               ") and point " + std::to_string(a + 1) + " (line " + std::to_string(v.lines[a]) + ") are both at " +
