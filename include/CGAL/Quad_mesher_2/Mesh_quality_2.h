@@ -184,13 +184,14 @@ std::size_t count_hanging_nodes(const std::vector<Point_2d>& pts,
   auto src = [&](std::size_t e) { return quads[e / 4][e % 4]; };
   auto tgt = [&](std::size_t e) { return quads[e / 4][(e % 4 + 1) % 4]; };
 
-  // Cell size: about the mean edge length, but with at most ~4 cells per edge overall.
+  // Cell size: about the mean edge length, but with at most about one cell per edge and
+  // 2048 x 2048 cells overall.
   double mean_len = 0;
   for(std::size_t e : edges)
     mean_len += length_2d(minus_2d(pts[tgt(e)], pts[src(e)]));
   mean_len /= double(edges.size());
-  double cell = (std::max)(mean_len, std::sqrt(w * h / (4.0 * double(edges.size()))));
-  cell = (std::max)(cell, (std::max)(w, h) / 4096.0);
+  double cell = (std::max)(mean_len, std::sqrt(w * h / double(edges.size())));
+  cell = (std::max)(cell, (std::max)(w, h) / 2048.0);
   cell = (std::max)(cell, 4 * tol);
   const std::size_t nx = std::size_t(w / cell) + 1, ny = std::size_t(h / cell) + 1;
   auto cx = [&](double x) {
