@@ -1,0 +1,218 @@
+// Copyright (c) 2026 Quad_mesher_2 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Quad_mesher_2 developers
+//
+// quad-mesher: the command-line tool. The only place that parses arguments, names files or
+// prints; everything else is in the library.
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <CGAL/Quad_mesher_2/IO/read_domain.h>
+#include <CGAL/Quad_mesher_2/IO/write_quad_mesh.h>
+#include <CGAL/Quad_mesher_2/Mesh_quality_2.h>
+#include <CGAL/Quad_mesher_2/Quadtree_mesher_2.h>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace QM = CGAL::Quad_mesher_2;
+
+namespace {
+
+struct Options
+{
+  std::string input;
+  std::vector<std::string> outputs;
+  std::string report;
+  std::string kernel = "epick";
+  std::string stop_after = "quadtree";
+  double max_size = 0;
+  double min_size = 0;
+  int max_depth = QM::Mesh_criteria_2<CGAL::Epick>::default_max_depth;
+  bool verbose = false;
+};
+
+const std::vector<std::string> output_extensions = { ".msh", ".vtu", ".off", ".svg" };
+
+std::string extension_of(const std::string& path)
+{
+  std::size_t dot = path.find_last_of('.');
+  std::size_t slash = path.find_last_of('/');
+  if(dot == std::string::npos || (slash != std::string::npos && dot < slash))
+    return "";
+  std::string ext = path.substr(dot);
+  for(char& c : ext)
+    c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+template <class K>
+int run(const Options& opt)
+{
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  nlohmann::ordered_json report;
+  nlohmann::ordered_json seconds;
+
+  QM::Domain_2<K> domain;
+  std::string error;
+  auto t = Clock::now();
+  if(!QM::IO::read_domain(opt.input, domain, &error)) {
+    std::cerr << "quad-mesher: " << error << "\n";
+    return 1;
+  }
+  seconds["read"] = seconds_since(t);
+  if(opt.verbose)
+    std::cerr << "read " << opt.input << ": " << domain.points.size() << " points, "
+              << domain.segments.size() << " segments, " << domain.holes.size() << " holes in "
+              << seconds["read"].get<double>() << " s\n";
+
+  QM::Mesh_criteria_2<K> criteria(opt.max_size, opt.min_size, opt.max_depth);
+  QM::Quadtree_mesher_2<K> mesher(domain, criteria);
+  QM::Quad_mesh_2<typename K::Point_2> mesh = mesher.run(QM::Stage::QUADTREE);
+  for(const auto& stage : mesher.timings()) {
+    seconds[stage.first] = stage.second;
+    if(opt.verbose)
+      std::cerr << "stage " << stage.first << ": " << stage.second << " s\n";
+  }
+
+  t = Clock::now();
+  QM::Mesh_quality_2 quality = QM::compute_quality(mesh);
+  seconds["quality"] = seconds_since(t);
+
+  t = Clock::now();
+  for(const std::string& out : opt.outputs) {
+    if(!QM::IO::write_quad_mesh(out, mesh)) {
+      std::cerr << "quad-mesher: cannot write " << out << "\n";
+      return 1;
+    }
+    if(opt.verbose)
+      std::cerr << "wrote " << out << "\n";
+  }
+  seconds["write"] = seconds_since(t);
+  seconds["total"] = seconds_since(start);
+
+  const auto& tree = mesher.quadtree();
+  report["input"] = { { "file", opt.input },
+                      { "points", domain.points.size() },
+                      { "segments", domain.segments.size() },
+                      { "holes", domain.holes.size() } };
+  report["kernel"] = opt.kernel;
+  report["stop_after"] = opt.stop_after;
+  report["quads"] = quality.number_of_quads;
+  report["vertices"] = quality.number_of_vertices;
+  report["min_angle"] = quality.min_angle;
+  report["max_angle"] = quality.max_angle;
+  report["mean_angle"] = quality.mean_angle;
+  report["angle_histogram_5deg"] = quality.angle_histogram;
+  report["share_in_45_135"] = quality.share_in_45_135;
+  report["share_in_60_120"] = quality.share_in_60_120;
+  report["aspect_ratio"] = { { "min", quality.min_aspect_ratio },
+                             { "max", quality.max_aspect_ratio },
+                             { "mean", quality.mean_aspect_ratio } };
+  report["scaled_jacobian"] = { { "min", quality.min_scaled_jacobian },
+                                { "mean", quality.mean_scaled_jacobian } };
+  report["validity"] = { { "valid", quality.is_valid() },
+                         { "inverted_quads", quality.number_of_inverted_quads },
+                         { "degenerate_quads", quality.number_of_degenerate_quads },
+                         { "non_manifold_edges", quality.number_of_non_manifold_edges },
+                         { "hanging_nodes", quality.number_of_hanging_nodes },
+                         { "duplicate_vertices", quality.number_of_duplicate_vertices },
+                         { "boundary_loops", quality.number_of_boundary_loops } };
+  report["quadtree_depth"] = tree.depth();
+  report["quadtree_leaves"] = tree.number_of_leaves();
+  report["quadtree_root"] = { { "cells_x", tree.root_cells_x() },
+                              { "cells_y", tree.root_cells_y() },
+                              { "side", tree.root_side() },
+                              { "origin", { tree.origin_x(), tree.origin_y() } } };
+  report["seconds"] = seconds;
+
+  if(!opt.report.empty()) {
+    std::ofstream out(opt.report);
+    out << report.dump(2) << "\n";
+    if(!out) {
+      std::cerr << "quad-mesher: cannot write " << opt.report << "\n";
+      return 1;
+    }
+  }
+  std::cout << quality.number_of_quads << " quads, " << quality.number_of_vertices
+            << " vertices, angles [" << quality.min_angle << ", " << quality.max_angle
+            << "] deg, quadtree depth " << tree.depth() << ", " << seconds["total"].get<double>()
+            << " s\n";
+  if(!quality.is_valid()) {
+    std::cerr << "quad-mesher: the mesh failed its validity check (see the report)\n";
+    return 3;
+  }
+  return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  Options opt;
+  CLI::App app{ "quad-mesher: all-quadrilateral meshes with guaranteed angles "
+                "(quadtree method of Liang, Ebeida and Zhang, IMR 2009)" };
+  app.add_option("input", opt.input,
+                 "input: Triangle .poly or .node, a plain 'x y' point file (.xy .txt .pts .dat), "
+                 "or WKT (.wkt)")->required();
+  app.add_option("-o,--output", opt.outputs,
+                 "output file, format from the extension: .msh (Gmsh 4.1), .vtu (ParaView), "
+                 ".off, .svg (picture, quads coloured by their worst angle); repeatable")
+    ->required();
+  app.add_option("--report", opt.report,
+                 "write a JSON report: counts, angles, shape, validity, quadtree depth, seconds "
+                 "per stage");
+  app.add_option("--kernel", opt.kernel,
+                 "CGAL kernel: epick (exact predicates, inexact constructions) or epeck (exact "
+                 "constructions)")
+    ->check(CLI::IsMember({ "epick", "epeck" }));
+  app.add_option("--stop-after", opt.stop_after,
+                 "last pipeline stage to run; 'quadtree' writes the strongly balanced, templated "
+                 "quadtree mesh of the input's bounding grid (paper Fig. 3(b))")
+    ->check(CLI::IsMember({ "quadtree" }));
+  app.add_option("--max-size", opt.max_size, "largest cell side (0: no bound)")
+    ->check(CLI::NonNegativeNumber);
+  app.add_option("--min-size", opt.min_size,
+                 "smallest cell side (0: no bound); input points closer than this may share a "
+                 "cell")
+    ->check(CLI::NonNegativeNumber);
+  app.add_option("--max-depth", opt.max_depth,
+                 "deepest quadtree level; a sizing that needs more is an error")
+    ->check(CLI::Range(0, 24));
+  app.add_flag("-v,--verbose", opt.verbose, "print what each stage did and its time");
+  CLI11_PARSE(app, argc, argv);
+
+  for(const std::string& out : opt.outputs) {
+    const std::string ext = extension_of(out);
+    if(std::find(output_extensions.begin(), output_extensions.end(), ext)
+       == output_extensions.end()) {
+      std::cerr << "quad-mesher: output '" << out
+                << "': unknown format (use .msh, .vtu, .off or .svg)\n";
+      return 2;
+    }
+  }
+  try {
+    if(opt.kernel == "epeck")
+      return run<CGAL::Epeck>(opt);
+    return run<CGAL::Epick>(opt);
+  } catch(const QM::Meshing_error& e) {
+    std::cerr << "quad-mesher: " << opt.input << ": " << e.what() << "\n";
+    return 1;
+  } catch(const std::bad_alloc&) {
+    std::cerr << "quad-mesher: out of memory (try a larger --min-size or a smaller --max-depth)\n";
+    return 1;
+  }
+}

@@ -1,0 +1,145 @@
+// Copyright (c) 2026 Quad_mesher_2 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Quad_mesher_2 developers
+//
+// The quad-mesher tool end to end: it is run as a user would run it.
+
+#include "qm2_test_kernel.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+#ifdef QM2_CLI_PATH
+
+namespace qm2_test_cli {
+
+const std::string kernel_name = qm2_test::exact_constructions ? "epeck" : "epick";
+
+struct Cli_run
+{
+  int status;
+  std::string out, err;
+};
+
+std::string slurp(const std::filesystem::path& p)
+{
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::filesystem::path scratch(const std::string& name)
+{
+  auto dir = std::filesystem::temp_directory_path() / ("qm2_cli_" + kernel_name);
+  std::filesystem::create_directories(dir);
+  return dir / name;
+}
+
+Cli_run run(const std::string& args)
+{
+  // one pair of files per test: ctest runs tests in parallel processes
+  const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  auto out = scratch(test + ".stdout"), err = scratch(test + ".stderr");
+  std::string cmd = std::string(QM2_CLI_PATH) + " " + args + " >" + out.string() + " 2>" + err.string();
+  int raw = std::system(cmd.c_str());
+  return { WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err) };
+}
+
+const std::string lake = std::string(QM2_DATA_DIR) + "/lake_superior/lake_superior.poly";
+
+TEST(quad_mesher_cli, meshes_lake_superior_with_every_output_and_a_report)
+{
+  auto msh = scratch("lake.msh"), svg = scratch("lake.svg"), vtu = scratch("lake.vtu"),
+       off = scratch("lake.off"), json = scratch("lake.json");
+  Cli_run r = run(lake + " --stop-after quadtree --kernel " + kernel_name + " -o " + msh.string() + " -o " +
+              svg.string() + " -o " + vtu.string() + " -o " + off.string() + " --report " + json.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  for(const auto& f : { msh, svg, vtu, off })
+    EXPECT_GT(std::filesystem::file_size(f), 1000u) << f;
+  EXPECT_NE(slurp(msh).find("$MeshFormat\n4.1"), std::string::npos);
+  auto report = nlohmann::json::parse(slurp(json));
+  EXPECT_GT(report["quads"].get<int>(), 1000);
+  EXPECT_GT(report["vertices"].get<int>(), 1000);
+  EXPECT_GE(report["min_angle"].get<double>(), 45 - 1e-9);
+  EXPECT_LE(report["max_angle"].get<double>(), 135 + 1e-9);
+  EXPECT_TRUE(report["validity"]["valid"].get<bool>());
+  EXPECT_EQ(report["validity"]["hanging_nodes"].get<int>(), 0);
+  EXPECT_EQ(report["validity"]["boundary_loops"].get<int>(), 1);
+  EXPECT_GE(report["quadtree_depth"].get<int>(), 6);
+  EXPECT_EQ(report["kernel"], kernel_name);
+  EXPECT_EQ(report["input"]["points"].get<int>(), 518);
+  EXPECT_EQ(report["input"]["segments"].get<int>(), 518);
+  for(const char* stage : { "read", "refine", "balance", "templates", "quality", "write", "total" })
+    EXPECT_TRUE(report["seconds"].contains(stage)) << stage;
+  EXPECT_EQ(report["angle_histogram_5deg"].size(), 72u);
+}
+
+TEST(quad_mesher_cli, both_kernels_give_the_same_mesh)
+{
+  auto a = scratch("k_epick.json"), b = scratch("k_epeck.json"), m = scratch("k.off");
+  ASSERT_EQ(run(lake + " -o " + m.string() + " --kernel epick --report " + a.string()).status, 0);
+  ASSERT_EQ(run(lake + " -o " + m.string() + " --kernel epeck --report " + b.string()).status, 0);
+  auto ja = nlohmann::json::parse(slurp(a)), jb = nlohmann::json::parse(slurp(b));
+  EXPECT_EQ(ja["quads"], jb["quads"]);
+  EXPECT_EQ(ja["vertices"], jb["vertices"]);
+  EXPECT_EQ(ja["quadtree_depth"], jb["quadtree_depth"]);
+}
+
+TEST(quad_mesher_cli, sizing_options_change_the_mesh)
+{
+  auto a = scratch("s_default.json"), b = scratch("s_max.json"), m = scratch("s.off");
+  ASSERT_EQ(run(lake + " -o " + m.string() + " --report " + a.string()).status, 0);
+  ASSERT_EQ(run(lake + " -o " + m.string() + " --max-size 0.01 --report " + b.string()).status, 0);
+  EXPECT_GT(nlohmann::json::parse(slurp(b))["quads"].get<int>(), nlohmann::json::parse(slurp(a))["quads"].get<int>());
+  Cli_run r = run(lake + " -o " + m.string() + " --max-depth 5");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("maximum depth 5"), std::string::npos) << r.err;
+}
+
+TEST(quad_mesher_cli, bad_input_gives_a_clear_error)
+{
+  auto bad = scratch("bad.poly"), m = scratch("bad.msh");
+  std::ofstream(bad) << "3 2 0 0\n1 0 0\n2 1 nan\n3 0 1\n";
+  Cli_run r = run(bad.string() + " -o " + m.string());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("bad.poly"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(":3"), std::string::npos) << r.err;
+  r = run(scratch("missing.poly").string() + " -o " + m.string());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("missing.poly"), std::string::npos) << r.err;
+}
+
+TEST(quad_mesher_cli, usage_errors)
+{
+  auto m = scratch("u.msh");
+  EXPECT_EQ(run(lake + " -o " + scratch("u.xyz").string()).status, 2);
+  EXPECT_NE(run(lake + " -o " + m.string() + " --stop-after nonsense").status, 0);
+  EXPECT_NE(run(lake + " -o " + m.string() + " --kernel double").status, 0);
+  EXPECT_NE(run(lake).status, 0); // no output
+  EXPECT_NE(run(lake + " -o " + m.string() + " --max-size -1").status, 0);
+}
+
+TEST(quad_mesher_cli, help_lists_every_option_and_verbose_prints_stages)
+{
+  Cli_run r = run("--help");
+  EXPECT_EQ(r.status, 0);
+  for(const char* opt : { "--output", "--report", "--kernel", "--stop-after", "--max-size", "--min-size", "--max-depth", "--verbose" })
+    EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
+  r = run(lake + " -o " + scratch("v.off").string() + " --verbose");
+  EXPECT_EQ(r.status, 0);
+  for(const char* stage : { "refine", "balance", "templates" })
+    EXPECT_NE(r.err.find(stage), std::string::npos) << stage;
+}
+
+} // namespace qm2_test_cli
+
+#endif // QM2_CLI_PATH
