@@ -92,9 +92,16 @@ int run(const Options& opt)
   QM::Mesh_quality_2 quality = QM::compute_quality(mesh);
   seconds["quality"] = seconds_since(t);
 
+  // the picture shows the input's segments over the mesh
+  std::vector<std::pair<typename K::Point_2, typename K::Point_2>> segments;
+  for(const auto& s : domain.segments)
+    segments.emplace_back(domain.points[s[0]], domain.points[s[1]]);
+
   t = Clock::now();
   for(const std::string& out : opt.outputs) {
-    if(!QM::IO::write_quad_mesh(out, mesh)) {
+    const bool written = extension_of(out) == ".svg" ? QM::IO::write_SVG(out, mesh, segments)
+                                                     : QM::IO::write_quad_mesh(out, mesh);
+    if(!written) {
       std::cerr << "quad-mesher: cannot write " << out << "\n";
       return 1;
     }
