@@ -1,0 +1,184 @@
+/*!
+\ingroup PkgQuadMesher2Concepts
+\cgalConcept
+
+The concept `QuadMesherTraits_2` describes the geometric types and function objects that
+`CGAL::Quad_mesher_2::Balanced_quadtree_2`, `CGAL::Quad_mesher_2::Quadtree_mesher_2`,
+`CGAL::Quad_mesher_2::Mesh_criteria_2` and `CGAL::Quad_mesher_2::Domain_2` use. The list is
+exactly what these classes call on the traits: the point coordinates, the extremes of an
+iso-rectangle, two comparisons (to find the bounding box of the input) and two
+constructions (lattice points and cell rectangles). A test (`test/test_traits_and_headers.cpp`)
+meshes with an archetype that provides nothing else.
+
+The number type `FT` must be constructible from `double`, comparable with `operator<`, and
+accepted by `CGAL::to_double()` and `CGAL::to_interval()` (any model of `FieldNumberType`
+that is `RealEmbeddable`). The mesher decides point location with exact comparisons of `FT`
+values against lattice coordinates, which are exact `double` values (see the user manual,
+section "Exact arithmetic").
+
+\cgalHasModelsBegin
+\cgalHasModelsBare{Any model of the `Kernel` concept; in particular:}
+\cgalHasModels{CGAL::Exact_predicates_inexact_constructions_kernel}
+\cgalHasModels{CGAL::Exact_predicates_exact_constructions_kernel}
+\cgalHasModelsEnd
+
+<b>Not covered by this concept.</b> Functions that take a point type rather than a traits
+class (`CGAL::Quad_mesher_2::compute_quality()`, the writers `write_MSH()`, `write_VTU()`,
+`write_OFF()`, `write_SVG()`) call `p.x()` and `p.y()` on the point directly. The readers in
+`CGAL::Quad_mesher_2::IO` construct points with `Construct_point_2`; `read_WKT()` also calls
+`CGAL::is_simple_2()`, `CGAL::bounded_side_2()`, `CGAL::orientation_2()` with the traits (so
+its kernel must be a model of `PolygonTraits_2` as well) and `Point_2::bbox()`.
+
+\sa `CGAL::Quad_mesher_2::Quadtree_mesher_2<GeomTraits>`
+\sa `CGAL::Quad_mesher_2::Balanced_quadtree_2<GeomTraits>`
+*/
+class QuadMesherTraits_2
+{
+public:
+
+/// \name Types
+/// @{
+
+/*!
+The number type of the coordinates. See the requirements above.
+*/
+typedef unspecified_type FT;
+
+/*!
+The point type; must be copyable and default constructible.
+*/
+typedef unspecified_type Point_2;
+
+/*!
+The iso-oriented rectangle type: the bounding box of the input and the geometry of a
+quadtree cell.
+*/
+typedef unspecified_type Iso_rectangle_2;
+
+/// @}
+
+/// \name Function Object Types
+/// @{
+
+/*!
+A function object providing `FT operator()(const Point_2& p)`, which returns the
+\f$ x\f$-coordinate of `p`.
+*/
+typedef unspecified_type Compute_x_2;
+
+/*!
+A function object providing `FT operator()(const Point_2& p)`, which returns the
+\f$ y\f$-coordinate of `p`.
+*/
+typedef unspecified_type Compute_y_2;
+
+/*!
+A function object providing `FT operator()(const Iso_rectangle_2& r)`, which returns the
+smallest \f$ x\f$-coordinate of `r`.
+*/
+typedef unspecified_type Compute_xmin_2;
+
+/*!
+A function object providing `FT operator()(const Iso_rectangle_2& r)`, which returns the
+smallest \f$ y\f$-coordinate of `r`.
+*/
+typedef unspecified_type Compute_ymin_2;
+
+/*!
+A function object providing `FT operator()(const Iso_rectangle_2& r)`, which returns the
+largest \f$ x\f$-coordinate of `r`.
+*/
+typedef unspecified_type Compute_xmax_2;
+
+/*!
+A function object providing `FT operator()(const Iso_rectangle_2& r)`, which returns the
+largest \f$ y\f$-coordinate of `r`.
+*/
+typedef unspecified_type Compute_ymax_2;
+
+/*!
+A predicate providing `bool operator()(const Point_2& p, const Point_2& q)`, which returns
+`true` iff the \f$ x\f$-coordinate of `p` is smaller than that of `q`.
+*/
+typedef unspecified_type Less_x_2;
+
+/*!
+A predicate providing `bool operator()(const Point_2& p, const Point_2& q)`, which returns
+`true` iff the \f$ y\f$-coordinate of `p` is smaller than that of `q`.
+*/
+typedef unspecified_type Less_y_2;
+
+/*!
+A function object providing `Point_2 operator()(const FT& x, const FT& y)`, which
+constructs the point \f$ (x, y)\f$.
+*/
+typedef unspecified_type Construct_point_2;
+
+/*!
+A function object providing
+- `Iso_rectangle_2 operator()(const Point_2& p, const Point_2& q)`, which constructs the
+  rectangle with lower-left corner `p` and upper-right corner `q` (used for cells), and
+- `Iso_rectangle_2 operator()(const Point_2& left, const Point_2& right, const Point_2& bottom, const Point_2& top)`,
+  which constructs the smallest rectangle whose sides pass through the four points (used for
+  the bounding box of the input).
+*/
+typedef unspecified_type Construct_iso_rectangle_2;
+
+/// @}
+
+/// \name Access to Function Objects
+/// @{
+
+/*!
+
+*/
+Compute_x_2 compute_x_2_object() const;
+
+/*!
+
+*/
+Compute_y_2 compute_y_2_object() const;
+
+/*!
+
+*/
+Compute_xmin_2 compute_xmin_2_object() const;
+
+/*!
+
+*/
+Compute_ymin_2 compute_ymin_2_object() const;
+
+/*!
+
+*/
+Compute_xmax_2 compute_xmax_2_object() const;
+
+/*!
+
+*/
+Compute_ymax_2 compute_ymax_2_object() const;
+
+/*!
+
+*/
+Less_x_2 less_x_2_object() const;
+
+/*!
+
+*/
+Less_y_2 less_y_2_object() const;
+
+/*!
+
+*/
+Construct_point_2 construct_point_2_object() const;
+
+/*!
+
+*/
+Construct_iso_rectangle_2 construct_iso_rectangle_2_object() const;
+
+/// @}
+
+}; /* end QuadMesherTraits_2 */
