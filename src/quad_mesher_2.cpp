@@ -32,7 +32,7 @@ struct Options
   std::vector<std::string> outputs;
   std::string report;
   std::string kernel = "epick";
-  std::string stop_after = "quadtree";
+  std::string stop_after = "points";
   double max_size = 0;
   double min_size = 0;
   int max_depth = QM::Mesh_criteria_2<CGAL::Epick>::default_max_depth;
@@ -81,7 +81,11 @@ int run(const Options& opt)
 
   QM::Mesh_criteria_2<K> criteria(opt.max_size, opt.min_size, opt.max_depth);
   QM::Quadtree_mesher_2<K> mesher(domain, criteria);
-  QM::Quad_mesh_2<typename K::Point_2> mesh = mesher.run(QM::Stage::QUADTREE);
+  const QM::Stage last = opt.stop_after == "quadtree" ? QM::Stage::QUADTREE : QM::Stage::POINTS;
+  QM::Quad_mesh_2<typename K::Point_2> mesh = mesher.run(last);
+  if(mesher.number_of_merged_points() > 0)
+    std::cerr << "quad-mesher: " << opt.input << ": merged " << mesher.number_of_merged_points()
+              << " duplicate input point(s)\n";
   for(const auto& stage : mesher.timings()) {
     seconds[stage.first] = stage.second;
     if(opt.verbose)
@@ -116,6 +120,7 @@ int run(const Options& opt)
                       { "points", domain.points.size() },
                       { "segments", domain.segments.size() },
                       { "holes", domain.holes.size() } };
+  report["input"]["merged_duplicate_points"] = mesher.number_of_merged_points();
   report["kernel"] = opt.kernel;
   report["stop_after"] = opt.stop_after;
   report["quads"] = quality.number_of_quads;
@@ -138,6 +143,8 @@ int run(const Options& opt)
                          { "hanging_nodes", quality.number_of_hanging_nodes },
                          { "duplicate_vertices", quality.number_of_duplicate_vertices },
                          { "boundary_loops", quality.number_of_boundary_loops } };
+  report["points_as_vertices"] = mesher.point_vertices().size();
+  report["max_aspect_ratio_at_points"] = QM::max_aspect_ratio_around(mesh, mesher.point_vertices());
   report["quadtree_depth"] = tree.depth();
   report["quadtree_leaves"] = tree.number_of_leaves();
   report["quadtree_root"] = { { "cells_x", tree.root_cells_x() },
@@ -187,9 +194,10 @@ int main(int argc, char** argv)
                  "constructions)")
     ->check(CLI::IsMember({ "epick", "epeck" }));
   app.add_option("--stop-after", opt.stop_after,
-                 "last pipeline stage to run; 'quadtree' writes the strongly balanced, templated "
-                 "quadtree mesh of the input's bounding grid (paper Fig. 3(b))")
-    ->check(CLI::IsMember({ "quadtree" }));
+                 "last pipeline stage to run: 'quadtree' writes the strongly balanced, templated "
+                 "quadtree mesh of the input's bounding grid (paper Fig. 3(b)); 'points' (the "
+                 "default) also moves a vertex onto every input point (paper §3, Lemma 1)")
+    ->check(CLI::IsMember({ "quadtree", "points" }));
   app.add_option("--max-size", opt.max_size, "largest cell side (0: no bound)")
     ->check(CLI::NonNegativeNumber);
   app.add_option("--min-size", opt.min_size,

@@ -74,7 +74,10 @@ TEST(Quadtree_mesher_2, min_size_caps_refinement_instead_of_failing)
   Domain d;
   d.points = { K::Point_2(0, 0), K::Point_2(1, 1), K::Point_2(0.5, 0.5), K::Point_2(0.5, 0.5 + 1e-12) };
   EXPECT_THROW(Mesher(d).run(), QM::Meshing_error); // 1e-12 apart needs ~40 levels
-  Mesher capped(d, Criteria(0, 1e-3));
+  Criteria criteria(0, 1e-3);
+  EXPECT_THROW(Mesher(d, criteria).run(), QM::Meshing_error); // the points must be vertices
+  criteria.set_points_as_vertices(false);
+  Mesher capped(d, criteria);
   auto mesh = capped.run();
   capped.quadtree().for_each_leaf([&](const QM::Cell_key& k) { EXPECT_GE(capped.quadtree().cell_side(k.level), 1e-3); });
   EXPECT_GT(mesh.quads.size(), 0u);
@@ -83,13 +86,15 @@ TEST(Quadtree_mesher_2, min_size_caps_refinement_instead_of_failing)
 TEST(Quadtree_mesher_2, errors_name_the_points)
 {
   Domain d;
-  d.points = { K::Point_2(0, 0), K::Point_2(1, 1), K::Point_2(1, 1) };
+  d.points = { K::Point_2(0, 0), K::Point_2(1, 1), K::Point_2(1, 1e-9 + 1) };
   try {
-    Mesher(d).run();
+    Mesher(d, Criteria(0, 0, 16)).run();
     FAIL();
   } catch(const QM::Meshing_error& e) {
-    EXPECT_NE(std::string(e.what()).find("input points 1 and 2 coincide"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("input points 1 (1, 1) and 2"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("maximum depth 16"), std::string::npos) << e.what();
   }
+  EXPECT_THROW(Mesher(d, Criteria(1e-3, 0, 5)).run(), QM::Meshing_error); // max size too deep
   Domain empty;
   EXPECT_THROW(Mesher(empty).run(), QM::Meshing_error);
   EXPECT_THROW(Criteria(-1), QM::Meshing_error);
@@ -123,7 +128,7 @@ TEST(Quadtree_mesher_2, vertices_are_exact_lattice_points)
 {
   Domain d = random_domain(50, 3, 1e-3, 12345.678);
   Mesher mesher(d);
-  auto mesh = mesher.run();
+  auto mesh = mesher.run(QM::Stage::QUADTREE);
   const auto& tree = mesher.quadtree();
   const double h = tree.cell_side(tree.vertex_level());
   for(const auto& p : mesh.points) {
@@ -172,14 +177,16 @@ TEST(Quadtree_mesher_2, stage_timings_are_recorded)
     names.push_back(t.first);
     EXPECT_GE(t.second, 0.0);
   }
-  EXPECT_EQ(names, (std::vector<std::string>{ "refine", "balance", "templates" }));
+  EXPECT_EQ(names, (std::vector<std::string>{ "refine", "balance", "templates", "points" }));
 }
 
 TEST(Quadtree_mesher_2, single_point_and_collinear_points)
 {
   Domain one;
   one.points = { K::Point_2(3, 4) };
-  auto mesh = QM::make_quad_mesh_2(one);
+  Criteria plain;
+  plain.set_points_as_vertices(false);
+  auto mesh = QM::make_quad_mesh_2(one, plain);
   EXPECT_EQ(mesh.quads.size(), 1u);
   Domain line;
   for(int i = 0; i < 20; ++i)

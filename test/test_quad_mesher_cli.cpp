@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -128,6 +129,38 @@ TEST(quad_mesher_cli, usage_errors)
   EXPECT_NE(run(lake + " -o " + m.string() + " --max-size -1").status, 0);
 }
 
+TEST(quad_mesher_cli, point_cloud_points_become_vertices)
+{
+  auto xy = scratch("cloud.xy"), msh = scratch("cloud.msh"), json = scratch("cloud.json");
+  {
+    std::ofstream out(xy);
+    out.precision(17);
+    for(int i = 0; i < 200; ++i)
+      out << std::fmod(i * 0.618033988749895, 1.0) << " " << std::fmod(i * 0.414213562373095, 1.0) << "\n";
+  }
+  Cli_run r = run(xy.string() + " -o " + msh.string() + " --kernel " + kernel_name + " --report " + json.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto report = nlohmann::json::parse(slurp(json));
+  EXPECT_EQ(report["stop_after"], "points");
+  EXPECT_EQ(report["points_as_vertices"].get<int>(), 200);
+  EXPECT_LE(report["max_aspect_ratio_at_points"].get<double>(), 1.5);
+  EXPECT_GE(report["min_angle"].get<double>(), 45 - 1e-9);
+  EXPECT_LE(report["max_angle"].get<double>(), 135 + 1e-9);
+  EXPECT_TRUE(report["validity"]["valid"].get<bool>());
+  // every input point is a node of the written mesh, digit for digit
+  std::string mesh = slurp(msh);
+  std::ifstream in(xy);
+  double x, y;
+  int found = 0;
+  while(in >> x >> y) {
+    std::ostringstream node;
+    node.precision(17);
+    node << x << " " << y << " 0";
+    found += mesh.find(node.str()) != std::string::npos;
+  }
+  EXPECT_EQ(found, 200);
+}
+
 TEST(quad_mesher_cli, help_lists_every_option_and_verbose_prints_stages)
 {
   Cli_run r = run("--help");
@@ -136,7 +169,7 @@ TEST(quad_mesher_cli, help_lists_every_option_and_verbose_prints_stages)
     EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
   r = run(lake + " -o " + scratch("v.off").string() + " --verbose");
   EXPECT_EQ(r.status, 0);
-  for(const char* stage : { "refine", "balance", "templates" })
+  for(const char* stage : { "refine", "balance", "templates", "points" })
     EXPECT_NE(r.err.find(stage), std::string::npos) << stage;
 }
 

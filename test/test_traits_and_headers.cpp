@@ -36,6 +36,8 @@ struct Archetype_traits
   typedef K::Compute_ymax_2 Compute_ymax_2;
   typedef K::Less_x_2 Less_x_2;
   typedef K::Less_y_2 Less_y_2;
+  typedef K::Less_xy_2 Less_xy_2;
+  typedef K::Equal_2 Equal_2;
   typedef K::Construct_point_2 Construct_point_2;
   typedef K::Construct_iso_rectangle_2 Construct_iso_rectangle_2;
 
@@ -47,6 +49,8 @@ struct Archetype_traits
   Compute_ymax_2 compute_ymax_2_object() const { return K().compute_ymax_2_object(); }
   Less_x_2 less_x_2_object() const { return K().less_x_2_object(); }
   Less_y_2 less_y_2_object() const { return K().less_y_2_object(); }
+  Less_xy_2 less_xy_2_object() const { return K().less_xy_2_object(); }
+  Equal_2 equal_2_object() const { return K().equal_2_object(); }
   Construct_point_2 construct_point_2_object() const { return K().construct_point_2_object(); }
   Construct_iso_rectangle_2 construct_iso_rectangle_2_object() const
   {

@@ -52,14 +52,19 @@ Angle_range angle_range(const CGAL::Quad_mesher_2::Quad_mesh_2<Point_2>& m)
   return r;
 }
 
+// Shoelace area, relative to the quad's first corner so that far-off coordinates do not
+// cancel away the digits.
 template <class Point_2>
 double signed_area(const CGAL::Quad_mesher_2::Quad_mesh_2<Point_2>& m, std::size_t q)
 {
+  const Point_2& o = m.points[m.quads[q][0]];
   double a = 0;
-  for(int c = 0; c < 4; ++c) {
+  for(int c = 1; c < 3; ++c) {
     const Point_2& p = m.points[m.quads[q][c]];
-    const Point_2& r = m.points[m.quads[q][(c + 1) % 4]];
-    a += CGAL::to_double(p.x()) * CGAL::to_double(r.y()) - CGAL::to_double(r.x()) * CGAL::to_double(p.y());
+    const Point_2& r = m.points[m.quads[q][c + 1]];
+    double px = CGAL::to_double(p.x() - o.x()), py = CGAL::to_double(p.y() - o.y());
+    double rx = CGAL::to_double(r.x() - o.x()), ry = CGAL::to_double(r.y() - o.y());
+    a += px * ry - rx * py;
   }
   return a / 2;
 }

@@ -139,14 +139,25 @@ public:
   /// the right); `p` must lie in the root grid. Decided with exact comparisons.
   Cell_key locate(const Point_2& p) const
   {
-    std::uint32_t i = lattice_index(m_traits.compute_x_2_object()(p), m_ox, cells_x(m_max_depth));
-    std::uint32_t j = lattice_index(m_traits.compute_y_2_object()(p), m_oy, cells_y(m_max_depth));
+    std::uint32_t i = lattice_index(m_traits.compute_x_2_object()(p), m_ox, m_nx, m_max_depth);
+    std::uint32_t j = lattice_index(m_traits.compute_y_2_object()(p), m_oy, m_ny, m_max_depth);
     for(int level = 0;; ++level) {
       Cell_key k(level, i >> (m_max_depth - level), j >> (m_max_depth - level));
       if(is_leaf(k))
         return k;
     }
   }
+  /// The vertex of the level-`level` lattice nearest to `p` (ties go up and right), as lattice
+  /// coordinates; decided exactly. `p` must lie in the root grid.
+  std::pair<std::int64_t, std::int64_t> nearest_vertex(const Point_2& p, int level) const
+  {
+    CGAL_precondition(level <= m_max_depth);
+    // the half-cell interval holding p tells the nearer end of the cell interval
+    std::int64_t i = lattice_index(m_traits.compute_x_2_object()(p), m_ox, m_nx, level + 1);
+    std::int64_t j = lattice_index(m_traits.compute_y_2_object()(p), m_oy, m_ny, level + 1);
+    return { (i + 1) >> 1, (j + 1) >> 1 };
+  }
+
   /// `true` if `p` lies in the half-open root grid
   bool contains(const Point_2& p) const
   {
@@ -196,13 +207,26 @@ public:
     CGAL_precondition(contains(p));
     if(level > m_max_depth)
       throw Meshing_error(depth_message(Cell_key(level, 0, 0), &p));
-    std::uint32_t i = lattice_index(m_traits.compute_x_2_object()(p), m_ox, cells_x(m_max_depth));
-    std::uint32_t j = lattice_index(m_traits.compute_y_2_object()(p), m_oy, cells_y(m_max_depth));
+    std::uint32_t i = lattice_index(m_traits.compute_x_2_object()(p), m_ox, m_nx, m_max_depth);
+    std::uint32_t j = lattice_index(m_traits.compute_y_2_object()(p), m_oy, m_ny, m_max_depth);
     for(int l = 0; l < level; ++l) {
       Cell_key k(l, i >> (m_max_depth - l), j >> (m_max_depth - l));
       if(is_leaf(k))
         split(k);
     }
+  }
+
+  /// Makes `k` a node (a leaf or split) by splitting the leaf that covers it, and that leaf's
+  /// descendants on the way down to `k`.
+  void ensure_node(const Cell_key& k)
+  {
+    if(is_node(k))
+      return;
+    int level = k.level - 1;
+    while(!is_node(Cell_key(level, k.i >> (k.level - level), k.j >> (k.level - level))))
+      --level;
+    for(; level < k.level; ++level)
+      split(Cell_key(level, k.i >> (k.level - level), k.j >> (k.level - level)));
   }
 
   /// Splits leaves until any two leaves that share an edge or a corner differ by at most one
@@ -297,19 +321,6 @@ private:
       (*m_new_leaves)[k.level].push_back(k);
   }
 
-  // Makes `k` a node by splitting the leaf that covers it, and that leaf's descendants on
-  // the way down to `k`.
-  void ensure_node(const Cell_key& k)
-  {
-    if(is_node(k))
-      return;
-    int level = k.level - 1;
-    while(!is_node(Cell_key(level, k.i >> (k.level - level), k.j >> (k.level - level))))
-      --level;
-    for(; level < k.level; ++level)
-      split(Cell_key(level, k.i >> (k.level - level), k.j >> (k.level - level)));
-  }
-
   void setup_root(double xmin, double ymin, double xmax, double ymax)
   {
     if(!(std::isfinite(xmin) && std::isfinite(ymin) && std::isfinite(xmax) && std::isfinite(ymax))
@@ -354,17 +365,18 @@ private:
         add_leaf(Cell_key(0, i, j));
   }
 
-  // The index of the lattice interval [origin + i h, origin + (i+1) h) containing x, at the
-  // finest cell level; exact, and clamped into [0, n).
-  std::uint32_t lattice_index(const FT& x, double origin, std::uint32_t n) const
+  // The index of the lattice interval [origin + i h, origin + (i+1) h) containing x, with h
+  // the cell side at `level`; exact, and clamped into the grid.
+  std::uint32_t lattice_index(const FT& x, double origin, std::uint32_t root_cells, int level) const
   {
-    const double h = cell_side(m_max_depth);
+    const double h = cell_side(level);
+    const std::int64_t n = std::int64_t(root_cells) << level;
     const auto xi = CGAL::to_interval(x);
     double guess = std::floor((0.5 * xi.first + 0.5 * xi.second - origin) / h);
     std::int64_t i = std::int64_t((std::min)((std::max)(guess, 0.0), double(n - 1)));
     while(i > 0 && x < FT(origin + double(i) * h))
       --i;
-    while(i + 1 < std::int64_t(n) && !(x < FT(origin + double(i + 1) * h)))
+    while(i + 1 < n && !(x < FT(origin + double(i + 1) * h)))
       ++i;
     return std::uint32_t(i);
   }

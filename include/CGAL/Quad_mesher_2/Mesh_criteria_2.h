@@ -5,6 +5,7 @@
 #ifndef CGAL_QUAD_MESHER_2_MESH_CRITERIA_2_H
 #define CGAL_QUAD_MESHER_2_MESH_CRITERIA_2_H
 
+#include <CGAL/Quad_mesher_2/Balanced_quadtree_2.h>
 #include <CGAL/Quad_mesher_2/Meshing_error.h>
 
 #include <CGAL/number_utils.h>
@@ -25,7 +26,11 @@ namespace Quad_mesher_2 {
 ///
 /// but never below `min_size()` (if set) nor deeper than `max_depth()`. A sizing that asks
 /// for cells deeper than `max_depth()` without a `min_size()` to stop it is an error
-/// (`Meshing_error`), not a silently coarser mesh.
+/// (`Meshing_error`), not a silently coarser mesh. `max_size()` wins over `min_size()` where
+/// the power-of-two cell sides cannot meet both.
+///
+/// With `points_as_vertices()` (the default) every input point becomes a mesh vertex (paper
+/// §3, Lemma 1): the tree is refined further around each point, see `Stage::POINTS`.
 ///
 /// \tparam GeomTraits a model of `QuadMesherTraits_2`
 template <class GeomTraits>
@@ -37,7 +42,8 @@ public:
   /// a target cell side at a point; must be positive
   typedef std::function<FT(const Point_2&)> Sizing_field;
 
-  static constexpr int default_max_depth = 20;
+  static constexpr int default_max_depth = 24;
+  static constexpr int max_supported_depth = Balanced_quadtree_2<GeomTraits>::max_supported_depth;
 
   /// `max_size` and `min_size` of 0 mean "no bound".
   explicit Mesh_criteria_2(double max_size = 0, double min_size = 0,
@@ -52,17 +58,20 @@ public:
   double min_size() const { return m_min_size; }
   int max_depth() const { return m_max_depth; }
   bool use_point_spacing() const { return m_use_point_spacing; }
+  bool points_as_vertices() const { return m_points_as_vertices; }
   const Sizing_field& sizing_field() const { return m_sizing_field; }
 
   void set_max_size(double s) { check_size(s, "maximum size"); m_max_size = s; check_order(); }
   void set_min_size(double s) { check_size(s, "minimum size"); m_min_size = s; check_order(); }
   void set_max_depth(int d)
   {
-    if(d < 0 || d > 24)
-      throw Meshing_error("maximum depth " + std::to_string(d) + " is outside [0, 24]");
+    if(d < 0 || d > max_supported_depth)
+      throw Meshing_error("maximum depth " + std::to_string(d) + " is outside [0, "
+                          + std::to_string(max_supported_depth) + "]");
     m_max_depth = d;
   }
   void set_use_point_spacing(bool b) { m_use_point_spacing = b; }
+  void set_points_as_vertices(bool b) { m_points_as_vertices = b; }
   void set_sizing_field(Sizing_field f) { m_sizing_field = std::move(f); }
 
 private:
@@ -83,6 +92,7 @@ private:
   double m_min_size = 0;
   int m_max_depth = default_max_depth;
   bool m_use_point_spacing = true;
+  bool m_points_as_vertices = true;
   Sizing_field m_sizing_field;
 };
 

@@ -490,6 +490,28 @@ Mesh_quality_2 compute_quality(const Quad_mesh_2<Point_2>& mesh)
   return r;
 }
 
+/// \ingroup PkgQuadMesher2Ref
+/// The largest aspect ratio (longest over shortest edge) of the quads that have one of
+/// `vertices` as a corner; 0 if there are none. Lemma 1 bounds it by 1.5 at input points.
+template <class Point_2>
+double max_aspect_ratio_around(const Quad_mesh_2<Point_2>& mesh, const std::vector<std::size_t>& vertices)
+{
+  std::vector<char> marked(mesh.points.size(), 0);
+  for(std::size_t v : vertices)
+    if(v < marked.size())
+      marked[v] = 1;
+  double worst = 0;
+  for(const auto& q : mesh.quads) {
+    if(!(marked[q[0]] || marked[q[1]] || marked[q[2]] || marked[q[3]]))
+      continue;
+    std::array<internal::Point_2d, 4> corners;
+    for(int k = 0; k < 4; ++k)
+      corners[k] = internal::to_point_2d(mesh.points[q[k]]);
+    worst = (std::max)(worst, internal::quad_aspect_ratio(corners));
+  }
+  return worst;
+}
+
 } // namespace Quad_mesher_2
 } // namespace CGAL
 

@@ -11,6 +11,7 @@
 #include <CGAL/Quad_mesher_2/Meshing_error.h>
 #include <CGAL/Quad_mesher_2/Quad_mesh_2.h>
 #include <CGAL/Quad_mesher_2/internal/apply_templates.h>
+#include <CGAL/Quad_mesher_2/internal/insert_points.h>
 #include <CGAL/Quad_mesher_2/internal/nearest_neighbor_distances.h>
 
 #include <algorithm>
@@ -30,14 +31,17 @@ namespace Quad_mesher_2 {
 /// The stages of the pipeline, in order; a mesher can stop after any of them.
 enum class Stage
 {
-  QUADTREE ///< strongly balanced adaptive quadtree with 2-refinement templates (paper Fig. 3(b))
+  QUADTREE, ///< strongly balanced adaptive quadtree with 2-refinement templates (paper Fig. 3(b))
+  POINTS    ///< every input point moved onto a mesh vertex (paper §3, Lemma 1)
 };
 
+/// \ingroup PkgQuadMesher2Ref
 /// the name of a stage as the command-line tool spells it
 inline const char* stage_name(Stage s)
 {
   switch(s) {
   case Stage::QUADTREE: return "quadtree";
+  case Stage::POINTS: return "points";
   }
   return "?";
 }
@@ -65,14 +69,17 @@ public:
     : m_domain(domain), m_criteria(criteria), m_traits(traits)
   {}
 
-  /// Stage 1: refines the quadtree by the criteria, then strongly balances it.
+  /// Stage 1: merges duplicate input points, refines the quadtree by the criteria (and, with
+  /// `points_as_vertices()`, around every input point), then strongly balances it.
   void build_quadtree()
   {
     auto start = std::chrono::steady_clock::now();
     if(m_domain.points.empty())
       throw Meshing_error("the input has no points");
     check_finite();
+    merge_duplicate_points();
     m_tree = std::make_unique<Quadtree>(bounding_box(), m_criteria.max_depth(), m_traits);
+    compute_point_spacing();
     refine_to_max_size();
     if(m_criteria.use_point_spacing())
       refine_to_point_spacing();
@@ -80,7 +87,14 @@ public:
       refine_to_sizing_field();
     record("refine", start);
     start = std::chrono::steady_clock::now();
-    m_tree->balance();
+    if(m_criteria.points_as_vertices()) {
+      std::vector<int> levels(m_points.size());
+      for(std::size_t i = 0; i < m_points.size(); ++i)
+        levels[i] = point_level(i, 1);
+      m_anchors = internal::anchor_points(*m_tree, m_points, levels);
+    } else {
+      m_tree->balance();
+    }
     record("balance", start);
   }
 
@@ -90,18 +104,41 @@ public:
   {
     CGAL_precondition(m_tree != nullptr);
     auto start = std::chrono::steady_clock::now();
-    Mesh mesh = internal::templated_mesh(*m_tree);
+    Mesh mesh = internal::templated_mesh(*m_tree, nullptr, &m_vertex_keys);
     record("templates", start);
     return mesh;
   }
 
+  /// Stage 2 (needs `points_as_vertices()`): moves a vertex of `mesh`, the result of
+  /// `core_mesh()`, onto every input point, and its neighbours so that every angle stays in
+  /// [45°, 135°] (in fact [72°, 116°] near the points) and the quads at each point have an
+  /// aspect ratio of at most 1.5 (Lemma 1).
+  void insert_points(Mesh& mesh)
+  {
+    CGAL_precondition(m_tree != nullptr && m_criteria.points_as_vertices());
+    auto start = std::chrono::steady_clock::now();
+    m_point_vertices = internal::move_anchors(*m_tree, mesh, m_vertex_keys, m_anchors, m_points);
+    record("points", start);
+  }
+
   /// Runs the stages up to `last` and returns the mesh.
-  Mesh run(Stage last = Stage::QUADTREE)
+  Mesh run(Stage last = Stage::POINTS)
   {
     build_quadtree();
-    CGAL_USE(last);
-    return core_mesh();
+    Mesh mesh = core_mesh();
+    if(last >= Stage::POINTS && m_criteria.points_as_vertices())
+      insert_points(mesh);
+    return mesh;
   }
+
+  /// the input points without exact duplicates, in input order
+  const std::vector<Point_2>& points() const { return m_points; }
+  /// how many input points were exact duplicates of an earlier one (merged)
+  std::size_t number_of_merged_points() const { return m_domain.points.size() - m_points.size(); }
+  /// for each point of `points()`, its vertex in the mesh (after `insert_points()`)
+  const std::vector<std::size_t>& point_vertices() const { return m_point_vertices; }
+  /// for each point of `points()`, the lattice vertex it moves (after `build_quadtree()`)
+  const std::vector<internal::Point_anchor>& anchors() const { return m_anchors; }
 
   const Quadtree& quadtree() const
   {
@@ -133,14 +170,84 @@ private:
     }
   }
 
+  // Exact duplicates are merged: keeping both would ask for a zero-size cell.
+  void merge_duplicate_points()
+  {
+    std::vector<std::size_t> order(m_domain.points.size());
+    for(std::size_t i = 0; i < order.size(); ++i)
+      order[i] = i;
+    auto less_xy = m_traits.less_xy_2_object();
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return less_xy(m_domain.points[a], m_domain.points[b]);
+    });
+    std::vector<bool> duplicate(order.size(), false);
+    auto equal = m_traits.equal_2_object();
+    for(std::size_t k = 1; k < order.size(); ++k)
+      if(equal(m_domain.points[order[k]], m_domain.points[order[k - 1]]))
+        duplicate[order[k]] = true;
+    m_points.clear();
+    for(std::size_t i = 0; i < m_domain.points.size(); ++i)
+      if(!duplicate[i])
+        m_points.push_back(m_domain.points[i]);
+  }
+
   typename GeomTraits::Iso_rectangle_2 bounding_box() const
   {
     auto less_x = m_traits.less_x_2_object();
     auto less_y = m_traits.less_y_2_object();
-    auto xs = std::minmax_element(m_domain.points.begin(), m_domain.points.end(), less_x);
-    auto ys = std::minmax_element(m_domain.points.begin(), m_domain.points.end(), less_y);
-    return m_traits.construct_iso_rectangle_2_object()(*xs.first, *xs.second, *ys.first,
-                                                       *ys.second);
+    auto xs = std::minmax_element(m_points.begin(), m_points.end(), less_x);
+    auto ys = std::minmax_element(m_points.begin(), m_points.end(), less_y);
+    auto box = m_traits.construct_iso_rectangle_2_object()(*xs.first, *xs.second, *ys.first,
+                                                           *ys.second);
+    if(!m_criteria.points_as_vertices())
+      return box;
+    // Room around the extreme points for the refined blocks that make them vertices.
+    const double xmin = CGAL::to_double(m_traits.compute_xmin_2_object()(box));
+    const double xmax = CGAL::to_double(m_traits.compute_xmax_2_object()(box));
+    const double ymin = CGAL::to_double(m_traits.compute_ymin_2_object()(box));
+    const double ymax = CGAL::to_double(m_traits.compute_ymax_2_object()(box));
+    double margin = (std::max)(xmax - xmin, ymax - ymin) / 8;
+    if(!(margin > 0))
+      margin = (std::max)((std::max)(std::abs(xmin), std::abs(ymin)) * 0x1p-20, 0x1p-20);
+    auto make_point = m_traits.construct_point_2_object();
+    return m_traits.construct_iso_rectangle_2_object()(
+      make_point(FT(std::nextafter(xmin - margin, -HUGE_VAL)), FT(std::nextafter(ymin - margin, -HUGE_VAL))),
+      make_point(FT(std::nextafter(xmax + margin, HUGE_VAL)), FT(std::nextafter(ymax + margin, HUGE_VAL))));
+  }
+
+  void compute_point_spacing()
+  {
+    const std::size_t n = m_points.size();
+    m_xy.resize(n);
+    for(std::size_t i = 0; i < n; ++i)
+      m_xy[i] = { CGAL::to_double(m_traits.compute_x_2_object()(m_points[i])),
+                  CGAL::to_double(m_traits.compute_y_2_object()(m_points[i])) };
+    internal::Nearest_neighbor_distances nn(m_xy);
+    m_spacing = std::move(nn.distance);
+    m_nearest = std::move(nn.neighbor);
+  }
+
+  // The level whose cells have side <= spacing/divisor at point i; an error if that is beyond
+  // the maximum depth and no minimum size caps it.
+  int point_level(std::size_t i, double divisor) const
+  {
+    if(!std::isfinite(m_spacing[i]))
+      return 0; // a single point
+    int level = level_for_size(m_spacing[i] / divisor);
+    if(level <= min_size_level())
+      return level;
+    if(m_criteria.min_size() > 0 && !m_criteria.points_as_vertices())
+      return min_size_level();
+    std::ostringstream msg;
+    msg.precision(17);
+    msg << "input points " << i << " (" << m_xy[i][0] << ", " << m_xy[i][1] << ") and "
+        << m_nearest[i] << " (" << m_xy[m_nearest[i]][0] << ", " << m_xy[m_nearest[i]][1]
+        << ") are " << m_spacing[i] << " apart: separating them needs quadtree depth " << level
+        << ", beyond the maximum depth " << m_criteria.max_depth();
+    if(m_criteria.min_size() > 0)
+      msg << " or the minimum size " << m_criteria.min_size();
+    msg << "; raise the maximum depth";
+    throw Meshing_error(msg.str());
   }
 
   // the level whose cells have side <= s
@@ -161,47 +268,21 @@ private:
   {
     if(m_criteria.max_size() <= 0)
       return;
-    const int level = (std::min)(level_for_size(m_criteria.max_size()), min_size_level());
+    const int level = level_for_size(m_criteria.max_size());
+    if(level > m_criteria.max_depth())
+      throw Meshing_error("the maximum size " + std::to_string(m_criteria.max_size())
+                          + " needs quadtree depth " + std::to_string(level)
+                          + ", beyond the maximum depth " + std::to_string(m_criteria.max_depth()));
     m_tree->refine([&](const Cell_key& k) { return k.level < level; });
   }
 
   // Paper §4.2: the cell holding input point i is no larger than s_i = min_j d_ij.
   void refine_to_point_spacing()
   {
-    const std::size_t n = m_domain.points.size();
-    if(n < 2)
-      return;
-    std::vector<std::array<double, 2>> xy(n);
-    for(std::size_t i = 0; i < n; ++i)
-      xy[i] = { CGAL::to_double(m_traits.compute_x_2_object()(m_domain.points[i])),
-                CGAL::to_double(m_traits.compute_y_2_object()(m_domain.points[i])) };
-    internal::Nearest_neighbor_distances nn(xy);
-    const int cap = min_size_level();
-    const bool capped = m_criteria.min_size() > 0;
-    for(std::size_t i = 0; i < n; ++i) {
-      if(nn.distance[i] <= 0 && !capped) {
-        std::ostringstream msg;
-        msg << "input points " << (std::min)(i, nn.neighbor[i]) << " and "
-            << (std::max)(i, nn.neighbor[i]) << " coincide at (" << xy[i][0] << ", " << xy[i][1]
-            << ")";
-        throw Meshing_error(msg.str());
-      }
-      int level = nn.distance[i] > 0 ? level_for_size(nn.distance[i]) : cap;
-      if(level > cap) {
-        if(!capped) {
-          std::ostringstream msg;
-          msg.precision(17);
-          msg << "input points " << i << " (" << xy[i][0] << ", " << xy[i][1] << ") and "
-              << nn.neighbor[i] << " are " << nn.distance[i]
-              << " apart: separating them needs quadtree depth " << level
-              << ", beyond the maximum depth " << m_criteria.max_depth()
-              << "; raise the maximum depth or set a minimum size";
-          throw Meshing_error(msg.str());
-        }
-        level = cap;
-      }
+    for(std::size_t i = 0; i < m_points.size(); ++i) {
+      const int level = point_level(i, 1);
       if(level > 0)
-        m_tree->refine_at(m_domain.points[i], level);
+        m_tree->refine_at(m_points[i], level);
     }
   }
 
@@ -229,7 +310,14 @@ private:
   const Domain_2<GeomTraits>& m_domain;
   Mesh_criteria_2<GeomTraits> m_criteria;
   GeomTraits m_traits;
+  std::vector<Point_2> m_points;                // input points, duplicates merged
+  std::vector<std::array<double, 2>> m_xy;      // their coordinates, for sizing only
+  std::vector<double> m_spacing;                // s_i = min_j d_ij
+  std::vector<std::size_t> m_nearest;           // the j of s_i
   std::unique_ptr<Quadtree> m_tree;
+  std::vector<internal::Point_anchor> m_anchors;
+  std::vector<std::uint64_t> m_vertex_keys;     // of the core mesh's vertices
+  std::vector<std::size_t> m_point_vertices;
   Timings m_timings;
 };
 
@@ -240,7 +328,7 @@ template <class GeomTraits>
 Quad_mesh_2<typename GeomTraits::Point_2>
 make_quad_mesh_2(const Domain_2<GeomTraits>& domain,
                  const Mesh_criteria_2<GeomTraits>& criteria = Mesh_criteria_2<GeomTraits>(),
-                 Stage last = Stage::QUADTREE)
+                 Stage last = Stage::POINTS)
 {
   Quadtree_mesher_2<GeomTraits> mesher(domain, criteria);
   return mesher.run(last);

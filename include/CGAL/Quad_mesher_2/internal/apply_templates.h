@@ -101,10 +101,12 @@ std::vector<Cell_key> leaves_in_morton_order(const Tree& tree)
 
 // The conforming all-quad mesh of a strongly balanced tree: every leaf replaced by its
 // template. Vertices are deduplicated by their integer key on the finest lattice, never by
-// comparing coordinates. If `quad_cells` is given, it receives the leaf of each quad.
+// comparing coordinates. If `quad_cells` is given, it receives the leaf of each quad; if
+// `vertex_keys` is, the key of each vertex on the tree's vertex lattice (x << 32 | y).
 template <class Tree>
 Quad_mesh_2<typename Tree::Point_2>
-templated_mesh(const Tree& tree, std::vector<Cell_key>* quad_cells = nullptr)
+templated_mesh(const Tree& tree, std::vector<Cell_key>* quad_cells = nullptr,
+               std::vector<std::uint64_t>* vertex_keys_out = nullptr)
 {
   CGAL_precondition(tree.is_strongly_balanced());
   typedef typename Tree::Point_2 Point_2;
@@ -144,6 +146,8 @@ templated_mesh(const Tree& tree, std::vector<Cell_key>* quad_cells = nullptr)
   for(std::uint64_t key : vertex_keys)
     mesh.points.push_back(tree.lattice_point(vertex_level, std::int64_t(key >> 32),
                                              std::int64_t(key & 0xffffffffu)));
+  if(vertex_keys_out != nullptr)
+    vertex_keys_out->swap(vertex_keys);
   return mesh;
 }
 

@@ -1,0 +1,218 @@
+// Copyright (c) 2026 Quad_mesher_2 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Quad_mesher_2 developers
+//
+// Input points as mesh vertices (paper §3, Lemma 1): every point a vertex, every angle in
+// [45°, 135°], aspect ratio at most 1.5 for the quads at each point.
+
+#include "qm2_mesh_checks.h"
+#include "qm2_test_kernel.h"
+
+#include <CGAL/Quad_mesher_2/Quadtree_mesher_2.h>
+#include <CGAL/Quad_mesher_2/internal/insert_points.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <random>
+
+namespace qm2_test_points {
+
+using qm2_test::K;
+namespace QM = CGAL::Quad_mesher_2;
+using Domain = QM::Domain_2<K>;
+using Mesher = QM::Quadtree_mesher_2<K>;
+using Mesh = QM::Quad_mesh_2<K::Point_2>;
+
+double aspect(const Mesh& m, std::size_t q)
+{
+  double lo = HUGE_VAL, hi = 0;
+  for(int c = 0; c < 4; ++c) {
+    const auto &a = m.points[m.quads[q][c]], &b = m.points[m.quads[q][(c + 1) % 4]];
+    double l = std::sqrt(CGAL::to_double(CGAL::squared_distance(a, b)));
+    lo = (std::min)(lo, l);
+    hi = (std::max)(hi, l);
+  }
+  return hi / lo;
+}
+
+// Lemma 1 on a mesh: each point is a vertex (exactly), all angles in [45, 135], the quads at
+// each point have aspect ratio <= 1.5, and the mesh tiles its grid rectangle.
+::testing::AssertionResult lemma_1(const Mesher& mesher, const Mesh& mesh, const std::vector<K::Point_2>& points)
+{
+  std::map<std::pair<double, double>, std::vector<std::size_t>> exact; // by coordinates
+  for(std::size_t v = 0; v < mesh.points.size(); ++v)
+    exact[{ CGAL::to_double(mesh.points[v].x()), CGAL::to_double(mesh.points[v].y()) }].push_back(v);
+  std::vector<std::vector<std::size_t>> quads_at(mesh.points.size());
+  for(std::size_t q = 0; q < mesh.quads.size(); ++q)
+    for(int c = 0; c < 4; ++c)
+      quads_at[mesh.quads[q][c]].push_back(q);
+  for(std::size_t i = 0; i < points.size(); ++i) {
+    auto it = exact.find({ CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()) });
+    if(it == exact.end())
+      return ::testing::AssertionFailure() << "input point " << i << " is not a mesh vertex";
+    bool found = false;
+    for(std::size_t v : it->second)
+      if(mesh.points[v] == points[i]) { // exact under Epeck
+        found = true;
+        for(std::size_t q : quads_at[v])
+          if(aspect(mesh, q) > 1.5)
+            return ::testing::AssertionFailure() << "quad at point " << i << " has aspect " << aspect(mesh, q);
+      }
+    if(!found)
+      return ::testing::AssertionFailure() << "input point " << i << " is only approximately a vertex";
+  }
+  auto range = qm2_checks::angle_range(mesh);
+  if(range.min < 45 - 1e-9 || range.max > 135 + 1e-9)
+    return ::testing::AssertionFailure() << "angles [" << range.min << ", " << range.max << "]";
+  const auto& t = mesher.quadtree();
+  return qm2_checks::tiles_rectangle(mesh, t.origin_x(), t.origin_y(),
+                                     t.origin_x() + t.root_cells_x() * t.root_side(),
+                                     t.origin_y() + t.root_cells_y() * t.root_side());
+}
+
+// The tents alone, on a uniform tree: for d sampled over its whole range, the bounds the
+// construction claims (insert_points.h).
+TEST(Insert_points, tent_bounds_hold_over_every_displacement)
+{
+  using Tree = QM::Balanced_quadtree_2<K>;
+  for(int radius : { 1, 3 }) {
+    Tree tree(K::Iso_rectangle_2(K::Point_2(0, 0), K::Point_2(1, 1)), 6);
+    tree.refine([](const QM::Cell_key& k) { return k.level < 4; }); // g = 1/8 on [0,2]^2
+    tree.balance();
+    std::vector<std::uint64_t> keys;
+    const Mesh base = QM::internal::templated_mesh(tree, nullptr, &keys);
+    const double g = 0.125, reach = radius == 1 ? 3 * g / 16 : g / 2;
+    double lo = 180, hi = 0, worst_aspect = 0;
+    const int steps = 16;
+    for(int sx = -steps; sx <= steps; ++sx)
+      for(int sy = -steps; sy <= steps; ++sy) {
+        std::vector<K::Point_2> p = { K::Point_2(1 + reach * sx / steps, 1 + reach * sy / steps) };
+        QM::internal::Point_anchor a{ 0, 4, radius, 8, 8 }; // W = (1, 1)
+        Mesh mesh = base;
+        QM::internal::move_anchors(tree, mesh, keys, { a }, p);
+        auto r = qm2_checks::angle_range(mesh);
+        lo = (std::min)(lo, r.min);
+        hi = (std::max)(hi, r.max);
+        for(std::size_t q = 0; q < mesh.quads.size(); ++q)
+          for(int c = 0; c < 4; ++c)
+            if(mesh.points[mesh.quads[q][c]] == p[0])
+              worst_aspect = (std::max)(worst_aspect, aspect(mesh, q));
+      }
+    if(radius == 1) {
+      EXPECT_NEAR(lo, 72.05, 0.01);
+      EXPECT_NEAR(hi, 115.99, 0.01);
+      EXPECT_LE(worst_aspect, 1.442);
+    } else {
+      EXPECT_NEAR(lo, 72.05, 0.01);
+      EXPECT_NEAR(hi, 115.99, 0.01);
+      EXPECT_LE(worst_aspect, 1.282);
+    }
+  }
+}
+
+Domain make(std::vector<K::Point_2> pts)
+{
+  Domain d;
+  d.points = std::move(pts);
+  return d;
+}
+
+void check(const std::vector<K::Point_2>& pts, const char* what)
+{
+  SCOPED_TRACE(what);
+  Domain d = make(pts);
+  Mesher mesher(d);
+  Mesh mesh = mesher.run();
+  EXPECT_TRUE(lemma_1(mesher, mesh, mesher.points()));
+  EXPECT_EQ(mesher.anchors().size(), mesher.points().size());
+}
+
+TEST(Insert_points, random_points)
+{
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<K::Point_2> pts;
+  for(int i = 0; i < 300; ++i)
+    pts.emplace_back(u(rng), u(rng));
+  check(pts, "uniform");
+}
+
+TEST(Insert_points, clusters_next_to_isolated_points)
+{
+  std::mt19937 rng(12);
+  std::normal_distribution<double> n(0, 1e-3);
+  std::vector<K::Point_2> pts = { K::Point_2(0.9, 0.9), K::Point_2(0.1, 0.8), K::Point_2(0.95, 0.05) };
+  for(int c = 0; c < 3; ++c)
+    for(int i = 0; i < 60; ++i)
+      pts.emplace_back(0.2 + 0.3 * c + n(rng), 0.3 + n(rng));
+  check(pts, "clusters");
+}
+
+TEST(Insert_points, degenerate_sets)
+{
+  check({ K::Point_2(0.3, 0.7) }, "one point");
+  check({ K::Point_2(0, 0), K::Point_2(1, 0) }, "two points");
+  std::vector<K::Point_2> line, diagonal, grid;
+  for(int i = 0; i < 40; ++i) {
+    line.emplace_back(0.1 * i, 2.0);
+    diagonal.emplace_back(i / 3.0, i / 3.0); // thirds never sit on a lattice
+  }
+  for(int i = 0; i < 10; ++i)
+    for(int j = 0; j < 10; ++j)
+      grid.emplace_back(i, j);
+  check(line, "collinear, horizontal");
+  check(diagonal, "collinear, diagonal, thirds");
+  check(grid, "integer grid");
+}
+
+TEST(Insert_points, far_from_the_origin_and_tiny_extents)
+{
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<K::Point_2> offset, tiny, close;
+  for(int i = 0; i < 50; ++i) {
+    offset.emplace_back(1e6 + u(rng), -1e6 + u(rng));
+    tiny.emplace_back(1e-6 * u(rng), 1e-6 * u(rng));
+  }
+  check(offset, "1e6 offset");
+  check(tiny, "1e-6 extent");
+  close = { K::Point_2(0, 0), K::Point_2(1, 1), K::Point_2(0.5, 0.5), K::Point_2(0.5 + 1e-5, 0.5) };
+  check(close, "1e-5 of the extent apart");
+}
+
+TEST(Insert_points, duplicates_are_merged_and_counted)
+{
+  Domain d = make({ K::Point_2(0, 0), K::Point_2(1, 1), K::Point_2(0, 0), K::Point_2(0.5, 0.25), K::Point_2(1, 1) });
+  Mesher mesher(d);
+  Mesh mesh = mesher.run();
+  EXPECT_EQ(mesher.number_of_merged_points(), 2u);
+  EXPECT_EQ(mesher.points().size(), 3u);
+  EXPECT_TRUE(lemma_1(mesher, mesh, d.points));
+}
+
+TEST(Insert_points, too_close_for_the_depth_is_a_clear_error)
+{
+  Domain d = make({ K::Point_2(0, 0), K::Point_2(1, 1), K::Point_2(0.5, 0.5), K::Point_2(0.5, 0.5 + 1e-12) });
+  try {
+    Mesher(d).run();
+    FAIL() << "no error";
+  } catch(const QM::Meshing_error& e) {
+    EXPECT_NE(std::string(e.what()).find("maximum depth"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Insert_points, quadtree_stage_leaves_points_off_the_vertices)
+{
+  Domain d = make({ K::Point_2(0.1, 0.1), K::Point_2(0.7, 0.3), K::Point_2(1.0 / 3, 0.9) });
+  Mesher mesher(d);
+  Mesh core = mesher.run(QM::Stage::QUADTREE);
+  bool third_is_vertex = false;
+  for(const auto& p : core.points)
+    third_is_vertex = third_is_vertex || p == d.points[2];
+  EXPECT_FALSE(third_is_vertex);
+  EXPECT_TRUE(qm2_checks::is_conforming(core));
+}
+
+} // namespace qm2_test_points
