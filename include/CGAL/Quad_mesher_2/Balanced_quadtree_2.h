@@ -234,8 +234,13 @@ public:
   /// splits that create leaves above `L`, and those are visited later in the sweep.
   void balance()
   {
+    // Only leaves made since the last balance can be too fine for a neighbour: the tree was
+    // balanced before, and splitting never coarsens anything.
     std::vector<std::vector<Cell_key>> by_level(m_max_depth + 1);
-    for_each_leaf([&](const Cell_key& k) { by_level[k.level].push_back(k); });
+    for(const Cell_key& k : m_unbalanced)
+      by_level[k.level].push_back(k);
+    m_unbalanced.clear();
+    m_unbalanced.shrink_to_fit();
     m_new_leaves = &by_level;
     for(int level = m_depth; level >= 2; --level) {
       // by_level[level] does not grow while this level is processed; Morton order keeps the
@@ -319,6 +324,8 @@ private:
     m_depth = (std::max)(m_depth, k.level);
     if(m_new_leaves != nullptr)
       (*m_new_leaves)[k.level].push_back(k);
+    else
+      m_unbalanced.push_back(k);
   }
 
   void setup_root(double xmin, double ymin, double xmax, double ymax)
@@ -405,7 +412,8 @@ private:
   internal::Key_map m_nodes;
   std::size_t m_number_of_leaves = 0;
   int m_depth = 0;
-  std::vector<std::vector<Cell_key>>* m_new_leaves = nullptr;
+  std::vector<std::vector<Cell_key>>* m_new_leaves = nullptr; // during balance()
+  std::vector<Cell_key> m_unbalanced; // leaves made since the last balance()
 };
 
 } // namespace Quad_mesher_2
