@@ -45,9 +45,11 @@ void BM_quadtree_and_templates(benchmark::State& state)
   const auto domain = random_points<K>(std::size_t(state.range(0)));
   std::size_t quads = 0;
   int depth = 0;
+  CGAL::Quad_mesher_2::Mesh_criteria_2<K> criteria;
+  criteria.set_points_as_vertices(false); // stage 1 alone
   for(auto _ : state) {
-    CGAL::Quad_mesher_2::Quadtree_mesher_2<K> mesher(domain);
-    auto mesh = mesher.run();
+    CGAL::Quad_mesher_2::Quadtree_mesher_2<K> mesher(domain, criteria);
+    auto mesh = mesher.run(CGAL::Quad_mesher_2::Stage::QUADTREE);
     quads = mesh.quads.size();
     depth = mesher.quadtree().depth();
     benchmark::DoNotOptimize(mesh.points.data());
