@@ -1,0 +1,646 @@
+// Copyright (c) 2026 Quad_mesher_2 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Quad_mesher_2 developers
+
+#ifndef CGAL_QUAD_MESHER_2_DOMAIN_LOOPS_2_H
+#define CGAL_QUAD_MESHER_2_DOMAIN_LOOPS_2_H
+
+#include <CGAL/Quad_mesher_2/Domain_2.h>
+#include <CGAL/Quad_mesher_2/Meshing_error.h>
+
+#include <CGAL/Bbox_2.h>
+#include <CGAL/Polygon_2.h>
+#include <CGAL/assertions.h>
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Quad_mesher_2 {
+
+/// \ingroup PkgQuadMesher2Ref
+/// One closed boundary curve of a domain, as indices into `Domain_2::points`.
+///
+/// The vertices are listed in order, the first one not repeated at the end, and oriented so
+/// that the domain lies on the LEFT of every edge `vertices[i] -> vertices[i+1]`: outer
+/// boundaries run counterclockwise, hole boundaries clockwise.
+template <class GeomTraits>
+struct Boundary_loop_2
+{
+  /// Indices into `Domain_2::points`, in order; the loop closes from the last to the first.
+  std::vector<std::size_t> vertices;
+  /// `true` if the domain is inside the loop (counterclockwise), `false` if the loop bounds a
+  /// hole (the domain is outside it; clockwise).
+  bool is_outer = true;
+  /// Nesting depth: 0 for a loop inside no other loop, 1 for a loop directly inside a depth-0
+  /// loop, and so on.
+  int depth = 0;
+};
+
+/// \ingroup PkgQuadMesher2Ref
+/// The boundary of a `Domain_2` as oriented loops, plus the input points that lie on no
+/// segment (which later become mesh vertices). Loops are sorted by depth (outermost first),
+/// and in order of their lowest segment index within a depth.
+template <class GeomTraits>
+struct Domain_loops_2
+{
+  std::vector<Boundary_loop_2<GeomTraits> > loops;
+  /// Indices into `Domain_2::points` of the points on no segment, increasing. All lie strictly
+  /// inside the domain.
+  std::vector<std::size_t> isolated_points;
+};
+
+namespace internal {
+
+inline std::string loops_format_double(double v)
+{
+  char buf[64];
+  const std::to_chars_result r = std::to_chars(buf, buf + sizeof(buf), v);
+  return std::string(buf, r.ptr);
+}
+
+template <class K>
+std::string loops_format_point(const typename K::Point_2& p, const K& traits)
+{
+  return "(" + loops_format_double(CGAL::to_double(traits.compute_x_2_object()(p))) + ", " +
+         loops_format_double(CGAL::to_double(traits.compute_y_2_object()(p))) + ")";
+}
+
+/// A bounding-volume hierarchy over boxes (median split on the longer axis), for box-overlap
+/// queries in O(log n + output) on well-spread input, whatever the clustering of the data.
+class Loops_box_tree
+{
+public:
+  explicit Loops_box_tree(const std::vector<Bbox_2>& boxes) : m_boxes(boxes)
+  {
+    m_items.resize(boxes.size());
+    for(std::size_t i = 0; i < boxes.size(); ++i) m_items[i] = static_cast<std::uint32_t>(i);
+    if(!boxes.empty()) {
+      m_nodes.reserve(2 * (boxes.size() / leaf_size + 1));
+      build(0, boxes.size());
+    }
+  }
+
+  /// Calls `f(i)` for every box `i` that overlaps `q` (closed boxes).
+  template <class F>
+  void query(const Bbox_2& q, F&& f) const
+  {
+    if(m_nodes.empty()) return;
+    std::vector<std::size_t> stack;
+    stack.push_back(0);
+    while(!stack.empty()) {
+      const Node& n = m_nodes[stack.back()];
+      stack.pop_back();
+      if(!CGAL::do_overlap(n.box, q)) continue;
+      if(n.left == no_child) {
+        for(std::size_t k = n.begin; k < n.end; ++k)
+          if(CGAL::do_overlap(m_boxes[m_items[k]], q)) f(static_cast<std::size_t>(m_items[k]));
+      } else {
+        stack.push_back(n.left);
+        stack.push_back(n.right);
+      }
+    }
+  }
+
+private:
+  static constexpr std::size_t leaf_size = 8;
+  static constexpr std::size_t no_child = (std::numeric_limits<std::size_t>::max)();
+
+  struct Node
+  {
+    Bbox_2 box;
+    std::size_t begin, end, left, right;
+  };
+
+  std::size_t build(std::size_t begin, std::size_t end)
+  {
+    const std::size_t id = m_nodes.size();
+    m_nodes.push_back(Node{Bbox_2(), begin, end, no_child, no_child});
+    Bbox_2 box = m_boxes[m_items[begin]];
+    double cx[2] = {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+    double cy[2] = {cx[0], cx[1]};
+    for(std::size_t k = begin; k < end; ++k) {
+      const Bbox_2& b = m_boxes[m_items[k]];
+      box += b;
+      const double x = 0.5 * (b.xmin() + b.xmax()), y = 0.5 * (b.ymin() + b.ymax());
+      cx[0] = (std::min)(cx[0], x); cx[1] = (std::max)(cx[1], x);
+      cy[0] = (std::min)(cy[0], y); cy[1] = (std::max)(cy[1], y);
+    }
+    m_nodes[id].box = box;
+    if(end - begin <= leaf_size) return id;
+    const bool split_x = (cx[1] - cx[0]) >= (cy[1] - cy[0]);
+    const std::size_t mid = begin + (end - begin) / 2;
+    std::nth_element(m_items.begin() + begin, m_items.begin() + mid, m_items.begin() + end,
+                     [&](std::uint32_t a, std::uint32_t b) {
+                       const Bbox_2& ba = m_boxes[a];
+                       const Bbox_2& bb = m_boxes[b];
+                       return split_x ? (ba.xmin() + ba.xmax()) < (bb.xmin() + bb.xmax())
+                                      : (ba.ymin() + ba.ymax()) < (bb.ymin() + bb.ymax());
+                     });
+    const std::size_t l = build(begin, mid);
+    const std::size_t r = build(mid, end);
+    m_nodes[id].left = l;
+    m_nodes[id].right = r;
+    return id;
+  }
+
+  const std::vector<Bbox_2>& m_boxes;
+  std::vector<std::uint32_t> m_items;
+  std::vector<Node> m_nodes;
+};
+
+/// The work of `extract_loops()`: every check in the order documented there.
+template <class K>
+class Loop_extractor
+{
+  typedef typename K::Point_2 Point_2;
+  typedef typename K::Segment_2 Segment_2;
+  static constexpr std::size_t none = (std::numeric_limits<std::size_t>::max)();
+
+public:
+  Loop_extractor(const Domain_2<K>& d, const K& traits) : m_d(d), m_traits(traits) {}
+
+  Domain_loops_2<K> run()
+  {
+    Domain_loops_2<K> out;
+    const std::size_t np = m_d.points.size();
+    if(m_d.segments.empty()) {  // a point cloud
+      if(!m_d.holes.empty())
+        throw Meshing_error("hole point 0 " + pt(m_d.holes[0]) +
+                            " lies outside every boundary loop: the domain has no segments, so there is nothing to make a hole in");
+      for(std::size_t i = 0; i < np; ++i) out.isolated_points.push_back(i);
+      return out;
+    }
+    check_segments();
+    compute_loops();
+    check_degenerate_loops();
+    check_intersections();
+    orient_loops();
+    build_point_locator();
+    nest_loops();
+    locate_holes();
+    classify_loops();
+
+    // Isolated points: strictly inside the domain.
+    for(std::size_t i = 0; i < np; ++i) {
+      if(m_degree[i] != 0) continue;
+      const Point_2& p = m_d.points[i];
+      std::size_t on_seg = none;
+      const std::size_t region = locate(p, none, on_seg);
+      if(on_seg != none)
+        throw Meshing_error("point " + std::to_string(i) + " " + pt(p) + " is on no segment but lies on segment " +
+                            seg_str(on_seg) + ": split the segment there or remove the point");
+      if(!m_in_domain[region == none ? m_loops.size() : region])
+        throw Meshing_error("point " + std::to_string(i) + " " + pt(p) + " is on no segment and lies outside the domain (" +
+                            where_region(region) + ")");
+      out.isolated_points.push_back(i);
+    }
+
+    // Output: by depth, then by discovery order (lowest segment index).
+    std::vector<std::size_t> order(m_loops.size());
+    for(std::size_t l = 0; l < order.size(); ++l) order[l] = l;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return m_depth[a] < m_depth[b]; });
+    for(std::size_t l : order) {
+      Boundary_loop_2<K> loop;
+      loop.vertices = m_loops[l];
+      loop.is_outer = m_is_outer[l];
+      loop.depth = static_cast<int>(m_depth[l]);
+      // Domain on the left: an outer loop must turn left (CCW), a hole right (CW).
+      if(m_ccw[l] != loop.is_outer) std::reverse(loop.vertices.begin() + 1, loop.vertices.end());
+      out.loops.push_back(std::move(loop));
+    }
+    return out;
+  }
+
+private:
+  // ---- messages -------------------------------------------------------------------------
+  std::string pt(const Point_2& p) const { return loops_format_point(p, m_traits); }
+  std::string vtx(std::size_t v) const { return "vertex " + std::to_string(v) + " " + pt(m_d.points[v]); }
+  std::string seg_str(std::size_t s) const
+  {
+    const auto& sg = m_d.segments[s];
+    return std::to_string(s) + " (vertices " + std::to_string(sg[0]) + " " + pt(m_d.points[sg[0]]) + " and " +
+           std::to_string(sg[1]) + " " + pt(m_d.points[sg[1]]) + ")";
+  }
+  std::string loop_str(std::size_t l) const
+  {
+    return "the loop of " + std::to_string(m_loops[l].size()) + " vertices starting at " + vtx(m_loops[l][0]) +
+           " (segment " + std::to_string(m_loop_first_segment[l]) + ")";
+  }
+  std::string where_region(std::size_t region) const
+  {
+    if(region == none) return "outside every boundary loop";
+    return "inside " + loop_str(region) + ", which bounds a hole there";
+  }
+
+  // ---- 1. per-segment checks and degrees ----------------------------------------------------
+  void check_segments()
+  {
+    const std::size_t np = m_d.points.size(), ns = m_d.segments.size();
+    m_degree.assign(np, 0);
+    for(std::size_t s = 0; s < ns; ++s) {
+      const auto& sg = m_d.segments[s];
+      for(int e = 0; e < 2; ++e)
+        if(sg[e] >= np)
+          throw Meshing_error("segment " + std::to_string(s) + " refers to vertex " + std::to_string(sg[e]) +
+                              ", but there are only " + std::to_string(np) + " points (indices are 0-based)");
+      if(sg[0] == sg[1])
+        throw Meshing_error("zero-length segment " + std::to_string(s) + ": both ends are " + vtx(sg[0]));
+      if(m_traits.equal_2_object()(m_d.points[sg[0]], m_d.points[sg[1]]))
+        throw Meshing_error("zero-length segment " + seg_str(s) + ": its two vertices are at the same place");
+      ++m_degree[sg[0]];
+      ++m_degree[sg[1]];
+    }
+    // Repeated segments (either direction).
+    std::vector<std::array<std::size_t, 3> > keys(ns);
+    for(std::size_t s = 0; s < ns; ++s) {
+      const auto& sg = m_d.segments[s];
+      keys[s] = {(std::min)(sg[0], sg[1]), (std::max)(sg[0], sg[1]), s};
+    }
+    std::sort(keys.begin(), keys.end());
+    for(std::size_t k = 1; k < ns; ++k) {
+      if(keys[k][0] != keys[k - 1][0] || keys[k][1] != keys[k - 1][1]) continue;
+      const std::size_t a = keys[k][0], b = keys[k][1];
+      const std::string both = "segments " + std::to_string(keys[k - 1][2]) + " and " + std::to_string(keys[k][2]) +
+                               " both join " + vtx(a) + " and " + vtx(b);
+      if(m_degree[a] == 2 && m_degree[b] == 2)
+        throw Meshing_error("a loop with fewer than 3 vertices (a repeated segment): " + both);
+      throw Meshing_error("repeated segment: " + both);
+    }
+    // Degrees: every vertex on a segment must have exactly two.
+    for(std::size_t v = 0; v < np; ++v) {
+      if(m_degree[v] == 0 || m_degree[v] == 2) continue;
+      std::string segs;
+      for(std::size_t s = 0; s < ns; ++s)
+        if(m_d.segments[s][0] == v || m_d.segments[s][1] == v) segs += (segs.empty() ? "" : ", ") + std::to_string(s);
+      if(m_degree[v] == 1)
+        throw Meshing_error(vtx(v) + " is the end of only one segment (segment " + segs +
+                            "): the boundary is not closed there (an open loop or a dangling segment)");
+      throw Meshing_error(vtx(v) + " is shared by " + std::to_string(m_degree[v]) + " segments (" + segs +
+                          "): boundary loops may not touch or branch; every vertex on a segment must have exactly two");
+    }
+  }
+
+  // ---- 2. loops -------------------------------------------------------------------------
+  void compute_loops()
+  {
+    const std::size_t np = m_d.points.size(), ns = m_d.segments.size();
+    std::vector<std::array<std::size_t, 2> > inc(np, {none, none});
+    for(std::size_t s = 0; s < ns; ++s)
+      for(int e = 0; e < 2; ++e) {
+        auto& slot = inc[m_d.segments[s][e]];
+        slot[slot[0] == none ? 0 : 1] = s;
+      }
+    m_loop_of_segment.assign(ns, none);
+    for(std::size_t s0 = 0; s0 < ns; ++s0) {
+      if(m_loop_of_segment[s0] != none) continue;
+      const std::size_t l = m_loops.size();
+      std::vector<std::size_t> verts;
+      const std::size_t start = m_d.segments[s0][0];
+      std::size_t s = s0, v = start;
+      do {
+        m_loop_of_segment[s] = l;
+        verts.push_back(v);
+        const auto& sg = m_d.segments[s];
+        v = (sg[0] == v) ? sg[1] : sg[0];
+        s = (inc[v][0] == s) ? inc[v][1] : inc[v][0];
+      } while(v != start);
+      if(verts.size() < 3) {
+        std::string vs;
+        for(std::size_t u : verts) vs += " " + vtx(u);
+        throw Meshing_error("a loop with fewer than 3 vertices (segment " + std::to_string(s0) + "):" + vs);
+      }
+      m_loops.push_back(std::move(verts));
+      m_loop_first_segment.push_back(s0);
+    }
+  }
+
+  // ---- 3. zero-area loops -----------------------------------------------------------------
+  void check_degenerate_loops()
+  {
+    for(std::size_t l = 0; l < m_loops.size(); ++l) {
+      const auto& L = m_loops[l];
+      const Point_2& a = m_d.points[L[0]];
+      const Point_2& b = m_d.points[L[1]];  // differs from a: no zero-length segments
+      bool flat = true;
+      for(std::size_t k = 2; k < L.size() && flat; ++k)
+        flat = (m_traits.orientation_2_object()(a, b, m_d.points[L[k]]) == COLLINEAR);
+      if(flat)
+        throw Meshing_error("degenerate loop: all the vertices of " + loop_str(l) +
+                            " are collinear, so it encloses zero area");
+    }
+  }
+
+  // ---- 4. segment intersections -----------------------------------------------------------
+  Bbox_2 seg_box(std::size_t s) const
+  {
+    const auto bbox = m_traits.construct_bbox_2_object();
+    return bbox(m_d.points[m_d.segments[s][0]]) + bbox(m_d.points[m_d.segments[s][1]]);
+  }
+
+  bool on_closed_segment(const Point_2& a, const Point_2& b, const Point_2& p) const
+  {
+    return m_traits.orientation_2_object()(a, b, p) == COLLINEAR &&
+           m_traits.collinear_are_ordered_along_line_2_object()(a, p, b);
+  }
+
+  void check_intersections()
+  {
+    const std::size_t ns = m_d.segments.size();
+    m_seg_boxes.resize(ns);
+    for(std::size_t s = 0; s < ns; ++s) m_seg_boxes[s] = seg_box(s);
+    m_tree.reset(new Loops_box_tree(m_seg_boxes));
+    std::vector<std::size_t> cand;
+    for(std::size_t i = 0; i < ns; ++i) {
+      cand.clear();
+      m_tree->query(m_seg_boxes[i], [&](std::size_t j) {
+        if(j > i) cand.push_back(j);
+      });
+      std::sort(cand.begin(), cand.end());  // the error names the first bad pair, whatever the tree
+      for(std::size_t j : cand) check_pair(i, j);
+    }
+  }
+
+  void check_pair(std::size_t i, std::size_t j) const
+  {
+    const auto& si = m_d.segments[i];
+    const auto& sj = m_d.segments[j];
+    const auto orient = m_traits.orientation_2_object();
+    const Point_2 &a = m_d.points[si[0]], &b = m_d.points[si[1]];
+    const Point_2 &c = m_d.points[sj[0]], &d = m_d.points[sj[1]];
+    // Consecutive segments (one shared vertex; never two, as repeats are rejected): they may
+    // only meet at that vertex, i.e. must not run back along each other.
+    for(int e = 0; e < 2; ++e)
+      for(int f = 0; f < 2; ++f) {
+        if(si[e] != sj[f]) continue;
+        const Point_2& v = m_d.points[si[e]];
+        const Point_2& p = m_d.points[si[1 - e]];
+        const Point_2& q = m_d.points[sj[1 - f]];
+        if(orient(p, v, q) == COLLINEAR && !m_traits.collinear_are_ordered_along_line_2_object()(p, v, q))
+          throw Meshing_error("segments " + seg_str(i) + " and " + seg_str(j) + " overlap: they leave their shared " +
+                              vtx(si[e]) + " in the same direction");
+        return;
+      }
+    const Segment_2 s1 = m_traits.construct_segment_2_object()(a, b);
+    const Segment_2 s2 = m_traits.construct_segment_2_object()(c, d);
+    if(!m_traits.do_intersect_2_object()(s1, s2)) return;
+    const std::string both = "segments " + seg_str(i) + " and " + seg_str(j);
+    if(orient(a, b, c) == COLLINEAR && orient(a, b, d) == COLLINEAR)
+      throw Meshing_error(both + " overlap (they are collinear and share more than a point, or touch end to end)");
+    const std::size_t ends[4][2] = {{si[0], j}, {si[1], j}, {sj[0], i}, {sj[1], i}};
+    for(const auto& e : ends) {
+      const auto& s = m_d.segments[e[1]];
+      if(on_closed_segment(m_d.points[s[0]], m_d.points[s[1]], m_d.points[e[0]]))
+        throw Meshing_error(both + " touch: " + vtx(e[0]) + " lies on segment " + std::to_string(e[1]) +
+                            " (loops may not touch, and a vertex may not lie inside a segment)");
+    }
+    throw Meshing_error(both + " cross");
+  }
+
+  // ---- 5. orientation ---------------------------------------------------------------------
+  void orient_loops()
+  {
+    const auto less_xy = m_traits.less_xy_2_object();
+    m_ccw.resize(m_loops.size());
+    for(std::size_t l = 0; l < m_loops.size(); ++l) {
+      const auto& L = m_loops[l];
+      std::size_t k = 0;
+      for(std::size_t i = 1; i < L.size(); ++i)
+        if(less_xy(m_d.points[L[i]], m_d.points[L[k]])) k = i;
+      const Point_2& prev = m_d.points[L[(k + L.size() - 1) % L.size()]];
+      const Point_2& next = m_d.points[L[(k + 1) % L.size()]];
+      const Orientation o = m_traits.orientation_2_object()(prev, m_d.points[L[k]], next);
+      // A simple polygon turns strictly at its lexicographically smallest vertex.
+      CGAL_assertion(o != COLLINEAR);
+      m_ccw[l] = (o == LEFT_TURN);
+    }
+  }
+
+  // ---- 6. point location by ray crossing (upward vertical ray) ----------------------------
+  void build_point_locator() { m_crossings.assign(m_loops.size(), 0); }
+
+  /// Fills `m_inside` with the loops that contain `p` strictly (skipping `skip_loop`), and
+  /// returns the innermost one (`none` if none) once the depths are known, else `none`.
+  /// Sets `on_seg` if `p` lies on a segment (of a loop other than `skip_loop`).
+  std::size_t locate(const Point_2& p, std::size_t skip_loop, std::size_t& on_seg)
+  {
+    const auto cmp_x = m_traits.compare_x_2_object();
+    const auto orient = m_traits.orientation_2_object();
+    const Bbox_2 pb = m_traits.construct_bbox_2_object()(p);
+    const Bbox_2 ray(pb.xmin(), pb.ymin(), pb.xmax(), std::numeric_limits<double>::infinity());
+    std::vector<std::size_t> touched;
+    on_seg = none;
+    m_tree->query(ray, [&](std::size_t s) {
+      const std::size_t l = m_loop_of_segment[s];
+      if(l == skip_loop || on_seg != none) return;
+      const Point_2& a = m_d.points[m_d.segments[s][0]];
+      const Point_2& b = m_d.points[m_d.segments[s][1]];
+      const Comparison_result ca = cmp_x(a, p), cb = cmp_x(b, p);
+      if(!(ca == LARGER && cb == LARGER) && !(ca == SMALLER && cb == SMALLER) && on_closed_segment(a, b, p)) {
+        on_seg = s;
+        return;
+      }
+      // Half-open rule: the segment counts if one end has x <= p.x and the other x > p.x.
+      const bool spans = (ca != LARGER && cb == LARGER) || (cb != LARGER && ca == LARGER);
+      if(!spans) return;
+      const Point_2& left = (ca == LARGER) ? b : a;
+      const Point_2& right = (ca == LARGER) ? a : b;
+      if(orient(left, right, p) != RIGHT_TURN) return;  // p is not below the segment
+      if(m_crossings[l]++ == 0) touched.push_back(l);
+    });
+    m_inside.clear();
+    for(std::size_t l : touched) {
+      if(m_crossings[l] % 2 == 1) m_inside.push_back(l);
+      m_crossings[l] = 0;
+    }
+    if(on_seg != none || m_depth.size() != m_loops.size()) return none;
+    std::size_t inner = none;
+    for(std::size_t l : m_inside)
+      if(inner == none || m_depth[l] > m_depth[inner]) inner = l;
+    return inner;
+  }
+
+  void nest_loops()
+  {
+    const std::size_t nl = m_loops.size();
+    std::vector<std::vector<std::size_t> > containers(nl);
+    for(std::size_t l = 0; l < nl; ++l) {
+      std::size_t on_seg = none;
+      locate(m_d.points[m_loops[l][0]], l, on_seg);
+      CGAL_assertion(on_seg == none);  // excluded by the intersection checks
+      containers[l] = m_inside;
+    }
+    m_depth.resize(nl);
+    for(std::size_t l = 0; l < nl; ++l) m_depth[l] = containers[l].size();
+    m_parent.assign(nl, none);
+    for(std::size_t l = 0; l < nl; ++l)
+      for(std::size_t c : containers[l])
+        if(m_depth[c] + 1 == m_depth[l]) m_parent[l] = c;
+  }
+
+  // ---- 7. hole points ---------------------------------------------------------------------
+  void locate_holes()
+  {
+    m_has_hole.assign(m_loops.size() + 1, false);  // region l: inside loop l, outside its children
+    for(std::size_t h = 0; h < m_d.holes.size(); ++h) {
+      const Point_2& p = m_d.holes[h];
+      std::size_t on_seg = none;
+      const std::size_t region = locate(p, none, on_seg);
+      if(on_seg != none)
+        throw Meshing_error("hole point " + std::to_string(h) + " " + pt(p) + " lies exactly on segment " +
+                            seg_str(on_seg) + ": it must be strictly inside the hole it marks");
+      if(region == none) {
+        std::string which;
+        std::vector<std::size_t> top;
+        for(std::size_t l = 0; l < m_loops.size(); ++l)
+          if(m_depth[l] == 0) top.push_back(l);
+        if(top.size() == 1)
+          which = "it is not inside " + loop_str(top[0]) + ", the outermost loop";
+        else
+          which = "it is inside none of the " + std::to_string(top.size()) + " outermost loops, e.g. not inside " +
+                  loop_str(top[0]);
+        throw Meshing_error("hole point " + std::to_string(h) + " " + pt(p) + " lies outside every boundary loop: " + which);
+      }
+      m_has_hole[region] = true;
+    }
+  }
+
+  // ---- 8. which side of each loop is the domain -------------------------------------------
+  void classify_loops()
+  {
+    const std::size_t nl = m_loops.size();
+    m_in_domain.assign(nl + 1, false);  // index nl: the unbounded region, never in the domain
+    const bool parity = m_d.holes.empty();
+    for(std::size_t l = 0; l < nl; ++l)
+      m_in_domain[l] = parity ? (m_depth[l] % 2 == 0) : !m_has_hole[l];
+    m_is_outer.resize(nl);
+    for(std::size_t l = 0; l < nl; ++l) {
+      const bool inside = m_in_domain[l];
+      const bool outside = m_in_domain[m_parent[l] == none ? nl : m_parent[l]];
+      if(inside && outside)
+        throw Meshing_error("the domain lies on both sides of " + loop_str(l) +
+                            ": internal boundaries are not supported; if the loop bounds a hole, put a hole point inside it");
+      if(!inside && !outside)
+        throw Meshing_error("the domain lies on neither side of " + loop_str(l) +
+                            (m_parent[l] == none ? std::string(": a hole point marks its inside as a hole, and it is inside no other loop")
+                                                 : ": hole points mark both its inside and its outside as holes"));
+      m_is_outer[l] = inside;
+    }
+  }
+
+  const Domain_2<K>& m_d;
+  const K& m_traits;
+  std::vector<std::size_t> m_degree;
+  std::vector<std::vector<std::size_t> > m_loops;     // in discovery order, unoriented
+  std::vector<std::size_t> m_loop_first_segment;
+  std::vector<std::size_t> m_loop_of_segment;
+  std::vector<Bbox_2> m_seg_boxes;
+  std::unique_ptr<Loops_box_tree> m_tree;
+  std::vector<bool> m_ccw;
+  std::vector<std::size_t> m_crossings;
+  std::vector<std::size_t> m_inside;
+  std::vector<std::size_t> m_depth;
+  std::vector<std::size_t> m_parent;
+  std::vector<bool> m_has_hole;
+  std::vector<bool> m_in_domain;
+  std::vector<bool> m_is_outer;
+};
+
+/// Sums `v` pairwise, keeping the expression depth logarithmic (lazy exact numbers).
+template <class FT>
+FT loops_balanced_sum(std::vector<FT> v)
+{
+  if(v.empty()) return FT(0);
+  while(v.size() > 1) {
+    std::size_t k = 0;
+    for(std::size_t i = 0; i + 1 < v.size(); i += 2) v[k++] = v[i] + v[i + 1];
+    if(v.size() % 2 == 1) v[k++] = v.back();
+    v.resize(k);
+  }
+  return v[0];
+}
+
+} // namespace internal
+
+/// \ingroup PkgQuadMesher2Ref
+/// Validates the segments of `domain` and returns them as closed, oriented boundary loops,
+/// with the points that lie on no segment.
+///
+/// **Semantics** (Triangle's, restricted to disjoint simple loops): every vertex on a segment
+/// must have exactly two segments, so the segments form closed loops, and no two segments may
+/// meet except consecutive ones at their shared vertex. The loops cut the plane into regions:
+/// the unbounded one, and for each loop the part inside it but outside the loops directly
+/// nested in it.
+/// - With hole points, a region is in the domain iff it is bounded and contains no hole point
+///   (Triangle's rule). Every loop must then have the domain on exactly one side: a loop
+///   with the domain on both sides (a hole without a hole point, or an internal boundary) or
+///   on neither side is an error.
+/// - Without hole points, regions alternate with nesting depth: inside a depth-0 loop is
+///   domain, inside a depth-1 loop a hole, inside a depth-2 loop (an island in a hole) domain
+///   again, and so on.
+///
+/// Each returned loop has the domain on its left (outer boundaries counterclockwise, holes
+/// clockwise): a loop is reversed (keeping its first vertex) where needed; points are never
+/// changed. A loop starts at the first vertex of its lowest-index segment. A domain without
+/// segments is a point cloud: no loops, every point isolated.
+///
+/// Every decision uses exact predicates of `traits`; candidate segment pairs come from a
+/// bounding-box hierarchy, so the cost is O(n log n) on ordinary inputs.
+///
+/// \throws Meshing_error naming the problem, with 0-based indices and coordinates, for: a
+/// segment index out of range; a zero-length segment; a repeated segment; a loop of fewer
+/// than 3 vertices; a vertex with one segment (open loop, dangling segment) or with more than
+/// two (touching or branching loops); a loop whose vertices are all collinear; two segments
+/// that cross, overlap, or touch (a vertex on another segment, or two vertices at the same
+/// place); a hole point on a segment or outside every loop; a loop with the domain on both or
+/// neither side; a point on no segment that lies on a segment or outside the domain.
+template <class K>
+Domain_loops_2<K> extract_loops(const Domain_2<K>& domain, const K& traits = K())
+{
+  internal::Loop_extractor<K> x(domain, traits);
+  return x.run();
+}
+
+/// \ingroup PkgQuadMesher2Ref
+/// The area of the domain: the signed areas of the loops (holes negative), summed in `FT`
+/// (exact with an exact-constructions kernel).
+template <class K>
+typename K::FT domain_area(const Domain_2<K>& domain, const Domain_loops_2<K>& loops, const K& traits = K())
+{
+  typedef typename K::FT FT;
+  const auto area = traits.compute_area_2_object();
+  std::vector<FT> terms;
+  for(const auto& loop : loops.loops) {
+    const auto& v = loop.vertices;
+    std::vector<FT> t;
+    for(std::size_t i = 1; i + 1 < v.size(); ++i)
+      t.push_back(area(domain.points[v[0]], domain.points[v[i]], domain.points[v[i + 1]]));
+    terms.push_back(internal::loops_balanced_sum(std::move(t)));
+  }
+  return internal::loops_balanced_sum(std::move(terms));
+}
+
+/// \ingroup PkgQuadMesher2Ref
+/// The loop as a polygon, in the loop's orientation (domain on the left).
+template <class K>
+Polygon_2<K> loop_polygon_2(const Domain_2<K>& domain, const Boundary_loop_2<K>& loop, const K& traits = K())
+{
+  Polygon_2<K> poly(traits);
+  for(std::size_t v : loop.vertices) poly.push_back(domain.points[v]);
+  return poly;
+}
+
+} // namespace Quad_mesher_2
+} // namespace CGAL
+
+#endif // CGAL_QUAD_MESHER_2_DOMAIN_LOOPS_2_H

@@ -1,0 +1,574 @@
+// Copyright (c) 2026 Quad_mesher_2 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Quad_mesher_2 developers
+//
+// Tests of CGAL/Quad_mesher_2/Domain_loops_2.h: loops, orientation, nesting, hole semantics,
+// isolated points, area, and every validation error with the place it names.
+
+#include "qm2_test_kernel.h"
+
+#include <CGAL/Quad_mesher_2/Domain_2.h>
+#include <CGAL/Quad_mesher_2/Domain_loops_2.h>
+#include <CGAL/Quad_mesher_2/IO/read_poly.h>
+#include <CGAL/Quad_mesher_2/Meshing_error.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <random>
+#include <set>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace qm2_test_loops {
+
+using K = qm2_test::K;
+using Point_2 = K::Point_2;
+using Domain = CGAL::Quad_mesher_2::Domain_2<K>;
+using Loops = CGAL::Quad_mesher_2::Domain_loops_2<K>;
+using CGAL::Quad_mesher_2::Meshing_error;
+using CGAL::Quad_mesher_2::extract_loops;
+namespace fs = std::filesystem;
+
+inline Domain load(const std::string& file)
+{
+  Domain d;
+  std::string err;
+  EXPECT_TRUE(CGAL::Quad_mesher_2::IO::read_poly(file, d, &err)) << file << ": " << err;
+  return d;
+}
+
+/// Adds a closed loop through the given coordinates (in the given order) to `d`.
+inline void add_loop(Domain& d, std::initializer_list<std::pair<double, double> > xy)
+{
+  const std::size_t first = d.points.size();
+  for(const auto& p : xy) d.points.push_back(Point_2(p.first, p.second));
+  const std::size_t n = xy.size();
+  for(std::size_t i = 0; i < n; ++i) d.segments.push_back({first + i, first + (i + 1) % n});
+}
+
+inline void add_square(Domain& d, double x0, double y0, double x1, double y1, bool ccw = true)
+{
+  if(ccw) add_loop(d, {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}});
+  else add_loop(d, {{x0, y0}, {x0, y1}, {x1, y1}, {x1, y0}});
+}
+
+/// The message of the Meshing_error that `extract_loops(d)` throws ("" if none).
+inline std::string error_of(const Domain& d)
+{
+  try {
+    extract_loops(d);
+  } catch(const Meshing_error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+#define QM2_EXPECT_ERROR(d, ...)                                                                   \
+  do {                                                                                             \
+    const std::string qm2_msg = qm2_test_loops::error_of(d);                                       \
+    EXPECT_FALSE(qm2_msg.empty()) << "no Meshing_error";                                           \
+    for(const char* qm2_part : {__VA_ARGS__})                                                      \
+      EXPECT_NE(qm2_msg.find(qm2_part), std::string::npos) << "message: " << qm2_msg << "\nlacks: " << qm2_part; \
+  } while(false)
+
+/// Independent check: the domain is on the left of each loop, i.e. its polygon is
+/// counterclockwise iff the loop is outer; the first vertex is kept; depths are consistent.
+inline void expect_domain_on_left(const Domain& d, const Loops& loops)
+{
+  for(std::size_t l = 0; l < loops.loops.size(); ++l) {
+    const auto& loop = loops.loops[l];
+    const CGAL::Polygon_2<K> poly = CGAL::Quad_mesher_2::loop_polygon_2(d, loop);
+    ASSERT_EQ(poly.size(), loop.vertices.size());
+    EXPECT_TRUE(poly.is_simple()) << "loop " << l;
+    EXPECT_EQ(poly.orientation(), loop.is_outer ? CGAL::COUNTERCLOCKWISE : CGAL::CLOCKWISE) << "loop " << l;
+    if(l > 0) {
+      EXPECT_LE(loops.loops[l - 1].depth, loop.depth) << "loops must be sorted outermost first";
+    }
+  }
+}
+
+inline double area_of(const Domain& d, const Loops& loops)
+{
+  return CGAL::to_double(CGAL::Quad_mesher_2::domain_area(d, loops));
+}
+
+// ---- the shared data --------------------------------------------------------------------
+
+struct Check_values
+{
+  long loops = -1;
+  double area = -1;
+};
+
+inline Check_values read_check(const fs::path& file)
+{
+  Check_values c;
+  std::ifstream in(file);
+  std::string line;
+  while(std::getline(in, line)) {
+    if(line.rfind("closed loops:", 0) == 0) c.loops = std::stol(line.substr(13));
+    const std::size_t a = line.find("; area ");
+    if(line.rfind("domain:", 0) == 0 && a != std::string::npos) c.area = std::stod(line.substr(a + 7));
+  }
+  return c;
+}
+
+/// Every .poly in the shared data, with its CHECK file.
+inline std::vector<std::pair<fs::path, fs::path> > shared_cases()
+{
+  std::vector<std::pair<fs::path, fs::path> > out;
+  for(const auto& dir : fs::directory_iterator(QM2_SHARED_DATA_DIR)) {
+    if(!dir.is_directory()) continue;
+    for(const auto& f : fs::directory_iterator(dir.path())) {
+      if(f.path().extension() != ".poly") continue;
+      const std::string stem = f.path().stem().string();
+      const fs::path check = dir.path() / (stem == dir.path().filename().string() ? "CHECK.txt" : "CHECK_" + stem + ".txt");
+      out.emplace_back(f.path(), check);
+    }
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+TEST(Domain_loops_2, SharedDataLoopsOrientationAndArea)
+{
+  const auto cases = shared_cases();
+  std::size_t tested = 0;
+  for(const auto& c : cases) {
+    const std::string name = c.first.stem().string();
+    if(name == "cgal_butterfly" || name == "face") continue;
+    SCOPED_TRACE(name);
+    const Domain d = load(c.first.string());
+    const Check_values check = read_check(c.second);
+    ASSERT_GT(check.loops, 0) << c.second;
+    ASSERT_GT(check.area, 0) << c.second;
+    const Loops loops = extract_loops(d);
+    ASSERT_EQ(static_cast<long>(loops.loops.size()), check.loops);
+    EXPECT_TRUE(loops.isolated_points.empty());
+    // The normalised files list each loop with the domain on its left: every edge of every
+    // extracted loop must be a file segment in the same direction.
+    std::set<std::pair<std::size_t, std::size_t> > directed;
+    for(const auto& s : d.segments) directed.insert({s[0], s[1]});
+    std::size_t edges = 0;
+    for(const auto& loop : loops.loops)
+      for(std::size_t i = 0; i < loop.vertices.size(); ++i, ++edges)
+        ASSERT_TRUE(directed.count({loop.vertices[i], loop.vertices[(i + 1) % loop.vertices.size()]}))
+            << "edge " << loop.vertices[i] << " -> " << loop.vertices[(i + 1) % loop.vertices.size()];
+    EXPECT_EQ(edges, d.segments.size());
+    // Outer first: one outer loop then holes (all shared cases are a boundary with holes).
+    EXPECT_TRUE(loops.loops[0].is_outer);
+    EXPECT_EQ(loops.loops[0].depth, 0);
+    for(std::size_t l = 1; l < loops.loops.size(); ++l) {
+      EXPECT_FALSE(loops.loops[l].is_outer);
+      EXPECT_EQ(loops.loops[l].depth, 1);
+    }
+    expect_domain_on_left(d, loops);
+    EXPECT_NEAR(area_of(d, loops), check.area, 1e-9 * check.area);
+    ++tested;
+  }
+  EXPECT_GE(tested, 13u) << "shared data not found in " << QM2_SHARED_DATA_DIR;
+}
+
+TEST(Domain_loops_2, SharedDataWithoutHolePointsUsesNestingParity)
+{
+  // Dropping the hole points of lake_superior keeps the same loops and area (parity rule).
+  Domain d = load(std::string(QM2_SHARED_DATA_DIR) + "/lake_superior/lake_superior.poly");
+  const Loops with = extract_loops(d);
+  d.holes.clear();
+  const Loops without = extract_loops(d);
+  ASSERT_EQ(with.loops.size(), without.loops.size());
+  for(std::size_t l = 0; l < with.loops.size(); ++l) {
+    EXPECT_EQ(with.loops[l].vertices, without.loops[l].vertices);
+    EXPECT_EQ(with.loops[l].is_outer, without.loops[l].is_outer);
+  }
+  EXPECT_NEAR(area_of(d, without), 0.1523024229, 1e-9);
+}
+
+TEST(Domain_loops_2, ExampleLakeSuperior)
+{
+  const Domain d = load(std::string(QM2_DATA_DIR) + "/lake_superior/lake_superior.poly");
+  const Loops loops = extract_loops(d);
+  ASSERT_EQ(loops.loops.size(), 7u);
+  EXPECT_TRUE(loops.loops[0].is_outer);
+  expect_domain_on_left(d, loops);
+  EXPECT_GT(area_of(d, loops), 0);
+}
+
+TEST(Domain_loops_2, SharedMultiRegionInputsAreRejected)
+{
+  const std::string base = QM2_SHARED_DATA_DIR;
+  const Domain butterfly = load(base + "/cgal_butterfly/cgal_butterfly.poly");
+  QM2_EXPECT_ERROR(butterfly, "is shared by", "may not touch or branch", "vertex ");
+  const Domain face = load(base + "/face/face.poly");
+  QM2_EXPECT_ERROR(face, "is the end of only one segment", "dangling", "vertex ");
+}
+
+TEST(Domain_loops_2, BahamasTiming)
+{
+  const Domain d = load(std::string(QM2_SHARED_DATA_DIR) + "/bahamas_islands/bahamas_islands.poly");
+  const auto t0 = std::chrono::steady_clock::now();
+  const Loops loops = extract_loops(d);
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_EQ(loops.loops.size(), 277u);
+  std::cout << "[ timing   ] extract_loops on bahamas_islands (" << d.points.size() << " vertices): " << ms << " ms"
+            << std::endl;
+}
+
+TEST(Domain_loops_2, ManySegmentsIsNotQuadratic)
+{
+  // A box with 150 x 150 square holes: 90004 segments. Testing all pairs (4e9) would take
+  // minutes; the bounding-box hierarchy takes well under a second.
+  Domain d;
+  const int n = 150;
+  add_square(d, 0, 0, 3 * n + 1, 3 * n + 1);
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < n; ++j) {
+      add_square(d, 3 * i + 1, 3 * j + 1, 3 * i + 3, 3 * j + 3, false);
+      d.holes.push_back(Point_2(3 * i + 2, 3 * j + 2));
+    }
+  const auto t0 = std::chrono::steady_clock::now();
+  const Loops loops = extract_loops(d);
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  ASSERT_EQ(loops.loops.size(), static_cast<std::size_t>(n * n + 1));
+  EXPECT_DOUBLE_EQ(area_of(d, loops), (3.0 * n + 1) * (3.0 * n + 1) - 4.0 * n * n);
+  EXPECT_LT(s, 20.0);
+  std::cout << "[ timing   ] extract_loops on " << d.segments.size() << " segments: " << s << " s" << std::endl;
+}
+
+// ---- hand-made cases ----------------------------------------------------------------------
+
+TEST(Domain_loops_2, SquareWithSquareHoleWithoutHolePoint)
+{
+  Domain d;
+  add_square(d, 0, 0, 4, 4);
+  add_square(d, 1, 1, 3, 3);  // CCW in the input: must come out CW
+  const Loops loops = extract_loops(d);
+  ASSERT_EQ(loops.loops.size(), 2u);
+  EXPECT_TRUE(loops.loops[0].is_outer);
+  EXPECT_EQ(loops.loops[0].depth, 0);
+  EXPECT_EQ(loops.loops[0].vertices, (std::vector<std::size_t>{0, 1, 2, 3}));
+  EXPECT_FALSE(loops.loops[1].is_outer);
+  EXPECT_EQ(loops.loops[1].depth, 1);
+  EXPECT_EQ(loops.loops[1].vertices, (std::vector<std::size_t>{4, 7, 6, 5}));
+  expect_domain_on_left(d, loops);
+  EXPECT_EQ(CGAL::Quad_mesher_2::domain_area(d, loops), 12);
+}
+
+TEST(Domain_loops_2, SquareWithSquareHoleWithHolePoint)
+{
+  Domain d;
+  add_square(d, 0, 0, 4, 4);
+  add_square(d, 1, 1, 3, 3);
+  d.holes.push_back(Point_2(2, 2));
+  const Loops loops = extract_loops(d);
+  ASSERT_EQ(loops.loops.size(), 2u);
+  EXPECT_TRUE(loops.loops[0].is_outer);
+  EXPECT_FALSE(loops.loops[1].is_outer);
+  EXPECT_EQ(loops.loops[1].vertices, (std::vector<std::size_t>{4, 7, 6, 5}));
+  EXPECT_EQ(CGAL::Quad_mesher_2::domain_area(d, loops), 12);
+}
+
+TEST(Domain_loops_2, HolePointsMakeUnmarkedInnerLoopsAnError)
+{
+  // Triangle's rule: with hole points, only marked faces are holes. The second inner square
+  // has no hole point, so it would be an internal boundary.
+  Domain d;
+  add_square(d, 0, 0, 10, 10);
+  add_square(d, 1, 1, 3, 3);
+  add_square(d, 5, 5, 7, 7);
+  d.holes.push_back(Point_2(2, 2));
+  QM2_EXPECT_ERROR(d, "both sides", "vertex 8 (5, 5)", "hole point");
+}
+
+TEST(Domain_loops_2, IslandInHole)
+{
+  for(int with_hole_point = 0; with_hole_point < 2; ++with_hole_point) {
+    SCOPED_TRACE(with_hole_point);
+    Domain d;
+    add_square(d, 2, 2, 8, 8, false);   // hole, listed first and CW
+    add_square(d, 4, 4, 6, 6, false);   // island, CW in the input
+    add_square(d, 0, 0, 10, 10, false); // outer, CW in the input
+    if(with_hole_point) d.holes.push_back(Point_2(3, 3));
+    d.points.push_back(Point_2(5, 5));  // isolated point on the island
+    d.points.push_back(Point_2(1, 9));  // isolated point in the outer ring
+    const Loops loops = extract_loops(d);
+    ASSERT_EQ(loops.loops.size(), 3u);
+    EXPECT_EQ(loops.loops[0].vertices, (std::vector<std::size_t>{8, 11, 10, 9}));
+    EXPECT_EQ(loops.loops[0].depth, 0);
+    EXPECT_TRUE(loops.loops[0].is_outer);
+    EXPECT_EQ(loops.loops[1].vertices, (std::vector<std::size_t>{0, 1, 2, 3}));
+    EXPECT_EQ(loops.loops[1].depth, 1);
+    EXPECT_FALSE(loops.loops[1].is_outer);
+    EXPECT_EQ(loops.loops[2].vertices, (std::vector<std::size_t>{4, 7, 6, 5}));
+    EXPECT_EQ(loops.loops[2].depth, 2);
+    EXPECT_TRUE(loops.loops[2].is_outer);
+    expect_domain_on_left(d, loops);
+    EXPECT_EQ(loops.isolated_points, (std::vector<std::size_t>{12, 13}));
+    EXPECT_EQ(CGAL::Quad_mesher_2::domain_area(d, loops), 100 - 36 + 4);
+  }
+}
+
+TEST(Domain_loops_2, HoleInIslandInHole)
+{
+  Domain d;
+  add_square(d, 0, 0, 10, 10);
+  add_square(d, 1, 1, 9, 9);
+  add_square(d, 2, 2, 8, 8);
+  add_square(d, 3, 3, 7, 7);
+  const Loops loops = extract_loops(d);
+  ASSERT_EQ(loops.loops.size(), 4u);
+  for(int l = 0; l < 4; ++l) {
+    EXPECT_EQ(loops.loops[l].depth, l);
+    EXPECT_EQ(loops.loops[l].is_outer, l % 2 == 0);
+  }
+  expect_domain_on_left(d, loops);
+  EXPECT_EQ(CGAL::Quad_mesher_2::domain_area(d, loops), 100 - 64 + 36 - 16);
+}
+
+TEST(Domain_loops_2, HolePointInIslandOnlyIsAnError)
+{
+  // With a hole point only inside the island, the ring between the hole loop and the island
+  // is domain, so the hole loop has the domain on both sides.
+  Domain d;
+  add_square(d, 0, 0, 10, 10);
+  add_square(d, 2, 2, 8, 8);
+  add_square(d, 4, 4, 6, 6);
+  d.holes.push_back(Point_2(5, 5));
+  QM2_EXPECT_ERROR(d, "both sides", "vertex 4 (2, 2)");
+}
+
+TEST(Domain_loops_2, HolePointsInsideAndAroundALoopIsAnError)
+{
+  Domain d;
+  add_square(d, 0, 0, 10, 10);
+  add_square(d, 2, 2, 8, 8);
+  d.holes.push_back(Point_2(1, 1));
+  d.holes.push_back(Point_2(5, 5));
+  QM2_EXPECT_ERROR(d, "neither side", "vertex 0 (0, 0)", "inside no other loop");
+}
+
+TEST(Domain_loops_2, ReversedAndShuffledInputIsNormalised)
+{
+  const Domain orig = load(std::string(QM2_SHARED_DATA_DIR) + "/lake_superior/lake_superior.poly");
+  Domain d = orig;
+  for(auto& s : d.segments) std::swap(s[0], s[1]);
+  std::mt19937 rng(7);
+  std::shuffle(d.segments.begin(), d.segments.end(), rng);
+  const Loops loops = extract_loops(d);
+  ASSERT_EQ(loops.loops.size(), 7u);
+  std::set<std::pair<std::size_t, std::size_t> > directed;
+  for(const auto& s : orig.segments) directed.insert({s[0], s[1]});
+  for(const auto& loop : loops.loops)
+    for(std::size_t i = 0; i < loop.vertices.size(); ++i)
+      EXPECT_TRUE(directed.count({loop.vertices[i], loop.vertices[(i + 1) % loop.vertices.size()]}));
+  expect_domain_on_left(d, loops);
+  EXPECT_EQ(d.points.size(), orig.points.size());
+  for(std::size_t i = 0; i < d.points.size(); ++i) EXPECT_EQ(d.points[i], orig.points[i]);
+  EXPECT_NEAR(area_of(d, loops), 0.1523024229, 1e-9);
+  // The first vertex of each loop is the first end of its lowest-index segment.
+  std::vector<std::size_t> first_ends;
+  for(const auto& loop : loops.loops) first_ends.push_back(loop.vertices[0]);
+  EXPECT_NE(std::find(first_ends.begin(), first_ends.end(), d.segments[0][0]), first_ends.end());
+}
+
+TEST(Domain_loops_2, PointCloud)
+{
+  Domain d;
+  d.points = {Point_2(0, 0), Point_2(1, 0), Point_2(5, 7)};
+  const Loops loops = extract_loops(d);
+  EXPECT_TRUE(loops.loops.empty());
+  EXPECT_EQ(loops.isolated_points, (std::vector<std::size_t>{0, 1, 2}));
+  EXPECT_EQ(CGAL::Quad_mesher_2::domain_area(d, loops), 0);
+  d.holes.push_back(Point_2(3, 3));
+  QM2_EXPECT_ERROR(d, "hole point 0 (3, 3)", "no segments");
+}
+
+TEST(Domain_loops_2, IsolatedPoints)
+{
+  Domain d;
+  add_square(d, 0, 0, 4, 4);
+  add_square(d, 1, 1, 3, 3);
+  d.points.push_back(Point_2(0.5, 0.5));
+  const Loops loops = extract_loops(d);
+  EXPECT_EQ(loops.isolated_points, (std::vector<std::size_t>{8}));
+
+  Domain in_hole = d;
+  in_hole.points.push_back(Point_2(2, 2.5));
+  QM2_EXPECT_ERROR(in_hole, "point 9 (2, 2.5)", "outside the domain", "hole", "vertex 4 (1, 1)");
+
+  Domain outside = d;
+  outside.points.push_back(Point_2(-1, 2));
+  QM2_EXPECT_ERROR(outside, "point 9 (-1, 2)", "outside the domain", "outside every boundary loop");
+
+  Domain on_segment = d;
+  on_segment.points.push_back(Point_2(4, 2));
+  QM2_EXPECT_ERROR(on_segment, "point 9 (4, 2)", "lies on segment 1 ");
+
+  Domain on_vertex = d;
+  on_vertex.points.push_back(Point_2(3, 3));
+  QM2_EXPECT_ERROR(on_vertex, "point 9 (3, 3)", "lies on segment ");
+}
+
+// ---- errors -------------------------------------------------------------------------------
+
+TEST(Domain_loops_2, ErrorSegmentIndexOutOfRange)
+{
+  Domain d;
+  add_square(d, 0, 0, 1, 1);
+  d.segments[2][1] = 9;
+  QM2_EXPECT_ERROR(d, "segment 2 refers to vertex 9", "only 4 points");
+}
+
+TEST(Domain_loops_2, ErrorDanglingSegment)
+{
+  Domain d;
+  d.points = {Point_2(0, 0), Point_2(1, 0), Point_2(1, 1), Point_2(0, 1)};
+  d.segments = {{0, 1}, {1, 2}, {2, 3}};
+  QM2_EXPECT_ERROR(d, "vertex 0 (0, 0) is the end of only one segment (segment 0)", "not closed");
+
+  Domain tail;
+  add_square(tail, 0, 0, 4, 4);
+  tail.points.push_back(Point_2(2, 2));
+  tail.segments.push_back({0, 4});  // vertex 0 gets degree 3, vertex 4 degree 1
+  QM2_EXPECT_ERROR(tail, "vertex 0 (0, 0) is shared by 3 segments (0, 3, 4)");
+}
+
+TEST(Domain_loops_2, ErrorTouchingLoopsAtAVertex)
+{
+  Domain d;
+  d.points = {Point_2(0, 0), Point_2(1, 0), Point_2(1, 1), Point_2(-1, 0), Point_2(-1, -1)};
+  d.segments = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {3, 4}, {4, 0}};
+  QM2_EXPECT_ERROR(d, "vertex 0 (0, 0) is shared by 4 segments (0, 2, 3, 5)", "may not touch or branch");
+}
+
+TEST(Domain_loops_2, ErrorCrossingSegments)
+{
+  Domain d;  // a bow tie
+  add_loop(d, {{0, 0}, {2, 0}, {0, 2}, {2, 2}});
+  QM2_EXPECT_ERROR(d, "segments 1 (vertices 1 (2, 0) and 2 (0, 2))", "3 (vertices 3 (2, 2) and 0 (0, 0))", "cross");
+
+  Domain two;  // two squares crossing
+  add_square(two, 0, 0, 2, 2);
+  add_square(two, 1, 1, 3, 3);
+  QM2_EXPECT_ERROR(two, "segments 1 ", "and 4 ", "cross");
+}
+
+TEST(Domain_loops_2, ErrorOverlappingSegments)
+{
+  Domain d;  // two squares sharing part of an edge
+  add_square(d, 0, 0, 2, 2);
+  add_loop(d, {{2, 1.5}, {2, 1}, {4, 1}, {4, 1.5}});
+  QM2_EXPECT_ERROR(d, "segments 1 (vertices 1 (2, 0) and 2 (2, 2)) and 4 (vertices 4 (2, 1.5) and 5 (2, 1)) overlap");
+
+  Domain back;  // a loop that runs back along its own previous segment
+  add_loop(back, {{0, 0}, {2, 0}, {1, 0}, {1, 1}});
+  QM2_EXPECT_ERROR(back, "segments 0 ", "and 1 ", "overlap", "vertex 1 (2, 0)");
+}
+
+TEST(Domain_loops_2, ErrorTouchingSegments)
+{
+  Domain d;  // a triangle whose apex lies on the square's edge
+  add_square(d, 0, 0, 4, 4);
+  add_loop(d, {{1, 1}, {3, 1}, {2, 4}});
+  QM2_EXPECT_ERROR(d, "touch", "vertex 6 (2, 4) lies on segment 2");
+
+  Domain dup;  // two loops with a vertex each at the same place
+  add_square(dup, 0, 0, 1, 1);
+  add_loop(dup, {{1, 1}, {2, 1}, {2, 2}});
+  QM2_EXPECT_ERROR(dup, "touch", "(1, 1)");
+}
+
+TEST(Domain_loops_2, ErrorZeroLengthSegment)
+{
+  Domain d;
+  add_square(d, 0, 0, 1, 1);
+  d.segments.push_back({2, 2});
+  QM2_EXPECT_ERROR(d, "zero-length segment 4", "vertex 2 (1, 1)");
+
+  Domain same_place;
+  add_loop(same_place, {{0, 0}, {1, 0}, {1, 0}, {1, 1}});
+  QM2_EXPECT_ERROR(same_place, "zero-length segment 1 (vertices 1 (1, 0) and 2 (1, 0))");
+}
+
+TEST(Domain_loops_2, ErrorRepeatedSegment)
+{
+  Domain d;
+  add_square(d, 0, 0, 1, 1);
+  d.segments.push_back({2, 1});
+  QM2_EXPECT_ERROR(d, "repeated segment", "segments 1 and 4", "vertex 1 (1, 0)", "vertex 2 (1, 1)");
+}
+
+TEST(Domain_loops_2, ErrorLoopWithFewerThanThreeVertices)
+{
+  Domain d;
+  add_square(d, 0, 0, 4, 4);
+  d.points.push_back(Point_2(1, 1));
+  d.points.push_back(Point_2(2, 2));
+  d.segments.push_back({4, 5});
+  d.segments.push_back({5, 4});
+  QM2_EXPECT_ERROR(d, "fewer than 3 vertices", "segments 4 and 5", "vertex 4 (1, 1)", "vertex 5 (2, 2)");
+}
+
+TEST(Domain_loops_2, ErrorCollinearLoop)
+{
+  Domain d;
+  add_square(d, 0, 0, 10, 10);
+  add_loop(d, {{1, 1}, {3, 3}, {2, 2}});
+  QM2_EXPECT_ERROR(d, "collinear", "zero area", "vertex 4 (1, 1)");
+}
+
+TEST(Domain_loops_2, ErrorHolePointOnSegment)
+{
+  Domain d;
+  add_square(d, 0, 0, 4, 4);
+  add_square(d, 1, 1, 3, 3);
+  d.holes.push_back(Point_2(3, 2));
+  QM2_EXPECT_ERROR(d, "hole point 0 (3, 2) lies exactly on segment 5 ");
+
+  Domain at_vertex = d;
+  at_vertex.holes[0] = Point_2(1, 1);
+  QM2_EXPECT_ERROR(at_vertex, "hole point 0 (1, 1) lies exactly on segment ");
+}
+
+TEST(Domain_loops_2, ErrorHolePointOutsideEveryLoop)
+{
+  Domain d;
+  add_square(d, 0, 0, 4, 4);
+  add_square(d, 1, 1, 3, 3);
+  d.holes.push_back(Point_2(2, 2));
+  d.holes.push_back(Point_2(5, 1));
+  QM2_EXPECT_ERROR(d, "hole point 1 (5, 1) lies outside every boundary loop",
+                   "not inside the loop of 4 vertices starting at vertex 0 (0, 0)");
+
+  Domain two;
+  add_square(two, 0, 0, 1, 1);
+  add_square(two, 2, 0, 3, 1);
+  two.holes.push_back(Point_2(1.5, 0.5));
+  QM2_EXPECT_ERROR(two, "hole point 0 (1.5, 0.5) lies outside every boundary loop", "none of the 2 outermost loops");
+}
+
+TEST(Domain_loops_2, ExactPredicatesNearlyCollinear)
+{
+  // A vertex a tiny distance inside the square's edge: a double comparison with a tolerance
+  // would call it touching; exact predicates accept it.
+  Domain d;
+  add_square(d, 0, 0, 1, 1);
+  add_loop(d, {{0.25, 0.5}, {0.5, 0.25}, {std::nextafter(1.0, 0.0), 0.5}});
+  const Loops loops = extract_loops(d);
+  ASSERT_EQ(loops.loops.size(), 2u);
+  expect_domain_on_left(d, loops);
+
+  Domain touching = d;
+  touching.points[6] = Point_2(1, 0.5);
+  QM2_EXPECT_ERROR(touching, "touch", "vertex 6 (1, 0.5) lies on segment 1");
+}
+
+} // namespace qm2_test_loops
