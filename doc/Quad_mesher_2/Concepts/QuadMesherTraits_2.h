@@ -6,11 +6,14 @@ The concept `QuadMesherTraits_2` describes the geometric types and function obje
 `CGAL::Quad_mesher_2::Balanced_quadtree_2`, `CGAL::Quad_mesher_2::Quadtree_mesher_2`,
 `CGAL::Quad_mesher_2::Mesh_criteria_2` and `CGAL::Quad_mesher_2::Domain_2` use. The list is
 exactly what these classes call on the traits: the point coordinates, the extremes of an
-iso-rectangle, two comparisons (to find the bounding box of the input) and two
-constructions (lattice points and cell rectangles). A test (`test/test_traits_and_headers.cpp`)
+iso-rectangle, four comparisons (`Less_x_2` and `Less_y_2` for the bounding box of the
+input, `Less_xy_2` and `Equal_2` to merge duplicate points) and two constructions (lattice
+points, the input's widened bounding box and the moved vertices of the points stage; cell
+rectangles). A test (`test/test_traits_and_headers.cpp`)
 meshes with an archetype that provides nothing else.
 
-The number type `FT` must be constructible from `double`, comparable with `operator<`, and
+The number type `FT` must be constructible from `double`, comparable with `operator<`,
+support `+`, `-` and `*` (the points stage moves vertices by \f$ x + f (p_x - w_x)\f$), and be
 accepted by `CGAL::to_double()` and `CGAL::to_interval()` (any model of `FieldNumberType`
 that is `RealEmbeddable`). The mesher decides point location with exact comparisons of `FT`
 values against lattice coordinates, which are exact `double` values (see the user manual,
@@ -109,8 +112,21 @@ A predicate providing `bool operator()(const Point_2& p, const Point_2& q)`, whi
 typedef unspecified_type Less_y_2;
 
 /*!
+A predicate providing `bool operator()(const Point_2& p, const Point_2& q)`, which returns
+`true` iff `p` is lexicographically smaller than `q` (by \f$ x\f$, then by \f$ y\f$).
+*/
+typedef unspecified_type Less_xy_2;
+
+/*!
+A predicate providing `bool operator()(const Point_2& p, const Point_2& q)`, which returns
+`true` iff `p` and `q` are equal.
+*/
+typedef unspecified_type Equal_2;
+
+/*!
 A function object providing `Point_2 operator()(const FT& x, const FT& y)`, which
-constructs the point \f$ (x, y)\f$.
+constructs the point \f$ (x, y)\f$ (lattice points, the corners of the widened bounding box,
+and the moved vertices of the points stage).
 */
 typedef unspecified_type Construct_point_2;
 
@@ -168,6 +184,16 @@ Less_x_2 less_x_2_object() const;
 
 */
 Less_y_2 less_y_2_object() const;
+
+/*!
+
+*/
+Less_xy_2 less_xy_2_object() const;
+
+/*!
+
+*/
+Equal_2 equal_2_object() const;
 
 /*!
 
