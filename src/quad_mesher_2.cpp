@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <string>
@@ -36,6 +37,7 @@ struct Options
   double max_size = 0;
   double min_size = 0;
   int max_depth = QM::Mesh_criteria_2<CGAL::Epick>::default_max_depth;
+  std::size_t max_cells = QM::Mesh_criteria_2<CGAL::Epick>().max_cells();
   bool verbose = false;
 };
 
@@ -51,6 +53,14 @@ std::string extension_of(const std::string& path)
   for(char& c : ext)
     c = char(std::tolower(static_cast<unsigned char>(c)));
   return ext;
+}
+
+bool same_file(const std::string& a, const std::string& b)
+{
+  std::error_code ec;
+  if(std::filesystem::exists(a, ec) && std::filesystem::exists(b, ec))
+    return std::filesystem::equivalent(a, b, ec);
+  return std::filesystem::weakly_canonical(a, ec) == std::filesystem::weakly_canonical(b, ec);
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start)
@@ -80,6 +90,9 @@ int run(const Options& opt)
               << seconds["read"].get<double>() << " s\n";
 
   QM::Mesh_criteria_2<K> criteria(opt.max_size, opt.min_size, opt.max_depth);
+  criteria.set_max_cells(opt.max_cells);
+  // the quadtree stage alone does not refine for point insertion
+  criteria.set_points_as_vertices(opt.stop_after != "quadtree");
   QM::Quadtree_mesher_2<K> mesher(domain, criteria);
   const QM::Stage last = opt.stop_after == "quadtree" ? QM::Stage::QUADTREE : QM::Stage::POINTS;
   QM::Quad_mesh_2<typename K::Point_2> mesh = mesher.run(last);
@@ -207,9 +220,28 @@ int main(int argc, char** argv)
   app.add_option("--max-depth", opt.max_depth,
                  "deepest quadtree level; a sizing that needs more is an error")
     ->check(CLI::Range(0, 24));
+  app.add_option("--max-cells", opt.max_cells,
+                 "most quadtree cells to make before stopping with an error (a memory guard: "
+                 "about 250 bytes each)")
+    ->check(CLI::PositiveNumber);
   app.add_flag("-v,--verbose", opt.verbose, "print what each stage did and its time");
   CLI11_PARSE(app, argc, argv);
 
+  // Never write over the input, and never write one file twice.
+  std::vector<std::string> targets = opt.outputs;
+  if(!opt.report.empty())
+    targets.push_back(opt.report);
+  for(std::size_t a = 0; a < targets.size(); ++a) {
+    if(same_file(targets[a], opt.input)) {
+      std::cerr << "quad-mesher: output '" << targets[a] << "' is the input file\n";
+      return 2;
+    }
+    for(std::size_t b = 0; b < a; ++b)
+      if(same_file(targets[a], targets[b])) {
+        std::cerr << "quad-mesher: '" << targets[a] << "' is named twice as an output\n";
+        return 2;
+      }
+  }
   for(const std::string& out : opt.outputs) {
     const std::string ext = extension_of(out);
     if(std::find(output_extensions.begin(), output_extensions.end(), ext)

@@ -113,13 +113,34 @@ TEST(Balanced_quadtree_2, depth_guard_raises_a_clear_error)
                CGAL::Quad_mesher_2::Meshing_error);
 }
 
-TEST(Balanced_quadtree_2, far_from_origin_and_too_deep_is_an_error)
+TEST(Balanced_quadtree_2, precision_lowers_the_depth_with_a_reason)
 {
-  // 1e-4 across at 1e5 from the origin: 24 levels cannot be represented in doubles.
+  // 1e-4 across at 1e5 from the origin: 24 levels cannot be represented exactly in doubles
   K::Iso_rectangle_2 box(K::Point_2(1e5, 1e5), K::Point_2(1e5 + 1e-4, 1e5 + 1e-4));
-  EXPECT_THROW(Tree(box, 24), CGAL::Quad_mesher_2::Meshing_error);
-  Tree ok(box, 12); // but 12 levels can
-  EXPECT_EQ(ok.number_of_leaves(), std::size_t(ok.root_cells_x() * ok.root_cells_y()));
+  Tree t(box, 24);
+  EXPECT_LT(t.max_depth(), 24);
+  EXPECT_GE(t.max_depth(), 12);
+  EXPECT_NE(t.depth_limit().find("exactly this far from the origin"), std::string::npos) << t.depth_limit();
+  try {
+    t.refine([](const Cell_key&) { return true; });
+    FAIL() << "no error";
+  } catch(const CGAL::Quad_mesher_2::Meshing_error& e) {
+    EXPECT_NE(std::string(e.what()).find("far from the origin"), std::string::npos) << e.what();
+  }
+  // a vanishing extent cannot be meshed at all
+  EXPECT_THROW(Tree(K::Iso_rectangle_2(K::Point_2(0, 0), K::Point_2(1e-300, 1e-300)), 24),
+               CGAL::Quad_mesher_2::Meshing_error);
+  Tree tiny(K::Iso_rectangle_2(K::Point_2(0, 0), K::Point_2(1e-135, 1e-135)), 24);
+  EXPECT_LT(tiny.max_depth(), 24);
+  EXPECT_NE(tiny.depth_limit().find("too small to measure"), std::string::npos) << tiny.depth_limit();
+}
+
+TEST(Balanced_quadtree_2, leaf_budget_stops_refinement)
+{
+  Tree t = unit_tree(12);
+  t.set_max_leaves(1000);
+  EXPECT_THROW(t.refine([](const Cell_key& k) { return k.level < 10; }), CGAL::Quad_mesher_2::Meshing_error);
+  EXPECT_LE(t.number_of_leaves(), 1000u);
 }
 
 TEST(Balanced_quadtree_2, balance_random_trees)

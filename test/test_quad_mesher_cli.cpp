@@ -119,6 +119,28 @@ TEST(quad_mesher_cli, bad_input_gives_a_clear_error)
   EXPECT_NE(r.err.find("missing.poly"), std::string::npos) << r.err;
 }
 
+TEST(quad_mesher_cli, never_overwrites_the_input_and_refuses_directories)
+{
+  auto copy = scratch("keep.poly"), m = scratch("keep.msh"), dir = scratch("dir.poly");
+  std::filesystem::copy_file(lake, copy, std::filesystem::copy_options::overwrite_existing);
+  const std::string before = slurp(copy);
+  EXPECT_EQ(run(copy.string() + " -o " + m.string() + " --report " + copy.string()).status, 2);
+  EXPECT_EQ(run(copy.string() + " -o " + m.string() + " -o " + m.string()).status, 2);
+  EXPECT_EQ(run(copy.string() + " -o " + m.string() + " --report " + m.string()).status, 2);
+  EXPECT_EQ(slurp(copy), before);
+  std::filesystem::create_directories(dir);
+  Cli_run r = run(dir.string() + " -o " + m.string());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("is a directory"), std::string::npos) << r.err;
+}
+
+TEST(quad_mesher_cli, cell_budget_stops_huge_meshes_cleanly)
+{
+  Cli_run r = run(lake + " -o " + scratch("big.msh").string() + " --stop-after quadtree --max-size 1e-5 --max-cells 100000");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("100000 quadtree cells"), std::string::npos) << r.err;
+}
+
 TEST(quad_mesher_cli, usage_errors)
 {
   auto m = scratch("u.msh");

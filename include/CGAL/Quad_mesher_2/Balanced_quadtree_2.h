@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -176,6 +177,13 @@ public:
     CGAL_precondition(v != nullptr && *v == LEAF);
     if(k.level >= m_max_depth)
       throw Meshing_error(depth_message(k));
+    if(m_number_of_leaves + 3 > m_max_leaves) {
+      std::ostringstream msg;
+      msg << "the mesh would need more than " << m_max_leaves
+          << " quadtree cells; coarsen the sizing (maximum size, minimum size) or raise the "
+             "cell budget";
+      throw Meshing_error(msg.str());
+    }
     *v = SPLIT;
     --m_number_of_leaves;
     for(int dy = 0; dy < 2; ++dy)
@@ -296,6 +304,11 @@ public:
 
   const GeomTraits& geom_traits() const { return m_traits; }
 
+  /// Refinement that would make more than `n` leaves raises `Meshing_error` instead of
+  /// exhausting memory.
+  void set_max_leaves(std::size_t n) { m_max_leaves = n; }
+  std::size_t max_leaves() const { return m_max_leaves; }
+
   std::size_t memory_bytes() const { return m_nodes.memory_bytes(); }
 
   /// deepest `max_depth` the key packing allows
@@ -345,25 +358,39 @@ private:
     int e = 0;
     std::frexp(side_goal, &e); // side_goal in [2^(e-1), 2^e)
     m_root_side = std::ldexp(1.0, e);
+    // The deepest level whose lattice (and the half-cell lattice of its templates) is exact in
+    // double this far from the origin, and whose cells are not so small that squared lengths
+    // underflow. Deeper cells are refused with the reason, not rounded.
+    const double far = (std::max)((std::max)(std::abs(xmin), std::abs(xmax)),
+                                  (std::max)(std::abs(ymin), std::abs(ymax)))
+                       + max_aspect * 2 * m_root_side;
+    int exact_depth = 50 - int(std::ceil(std::log2(far / m_root_side)));
+    while(exact_depth >= 0 && std::ldexp(m_root_side, -(exact_depth + 1)) < min_cell_side)
+      --exact_depth;
+    if(exact_depth < 0) {
+      std::ostringstream msg;
+      msg << "the input's extent " << extent << (extent < 1e-100 ? " is too small to mesh"
+                                                                 : " is too small for its distance from the origin")
+          << " (|x| up to " << far << "); translate or scale the input";
+      throw Meshing_error(msg.str());
+    }
+    if(exact_depth < m_max_depth) {
+      std::ostringstream msg;
+      msg << "cells below " << std::ldexp(m_root_side, -exact_depth)
+          << (std::ldexp(m_root_side, -(exact_depth + 1)) < min_cell_side * 2
+                ? " are too small to measure in double precision"
+                : " cannot be represented exactly this far from the origin")
+          << " (quadtree depth " << exact_depth << ")";
+      m_depth_limit = msg.str();
+      m_max_depth = exact_depth;
+    }
     const double finest = std::ldexp(m_root_side, -(m_max_depth + 1));
     m_ox = std::floor(xmin / finest) * finest;
     m_oy = std::floor(ymin / finest) * finest;
     // Strictly inside: cells are half-open, so the upper bounds need their own cell.
     m_nx = std::uint32_t(std::floor((xmax - m_ox) / m_root_side)) + 1;
     m_ny = std::uint32_t(std::floor((ymax - m_oy) / m_root_side)) + 1;
-    if(m_nx > max_aspect + 2 || m_ny > max_aspect + 2)
-      throw Meshing_error("internal error: root grid too large");
-    const double far = (std::max)((std::max)(std::abs(m_ox), std::abs(m_oy)),
-                                  (std::max)(std::abs(m_ox + m_nx * m_root_side),
-                                             std::abs(m_oy + m_ny * m_root_side)));
-    if(far / finest >= 0x1p52) {
-      std::ostringstream msg;
-      msg << "the input lies too far from the origin for its size: at |x| = " << far
-          << ", cells of side " << finest << " (quadtree depth " << m_max_depth
-          << ") cannot be represented exactly; translate the input nearer to the origin "
-             "or lower the maximum depth";
-      throw Meshing_error(msg.str());
-    }
+    CGAL_assertion(m_nx <= max_aspect + 2 && m_ny <= max_aspect + 2);
     m_nodes = internal::Key_map(std::size_t(m_nx) * m_ny * 4);
     m_number_of_leaves = 0;
     m_depth = 0;
@@ -388,11 +415,22 @@ private:
     return std::uint32_t(i);
   }
 
+public:
+  /// Why no cell can be split at `max_depth()`: the requested depth, or the precision limit
+  /// that lowered it. For error messages.
+  std::string depth_limit() const
+  {
+    if(!m_depth_limit.empty())
+      return m_depth_limit;
+    return "the maximum depth " + std::to_string(m_max_depth);
+  }
+
+private:
   std::string depth_message(const Cell_key& k, const Point_2* p = nullptr) const
   {
     std::ostringstream msg;
-    msg << "the sizing asks for quadtree cells deeper than the maximum depth " << m_max_depth
-        << " (cells of side " << cell_side(m_max_depth) << ")";
+    msg << "the sizing asks for quadtree cells deeper than " << depth_limit() << " (cells of side "
+        << cell_side(m_max_depth) << ")";
     if(p != nullptr)
       msg << " near (" << CGAL::to_double(m_traits.compute_x_2_object()(*p)) << ", "
           << CGAL::to_double(m_traits.compute_y_2_object()(*p)) << ")";
@@ -403,6 +441,8 @@ private:
   }
 
   static constexpr double max_aspect = 16;
+  // cells smaller than this would have squared lengths near double's underflow
+  static constexpr double min_cell_side = 1e-140;
 
   GeomTraits m_traits;
   int m_max_depth;
@@ -414,6 +454,8 @@ private:
   int m_depth = 0;
   std::vector<std::vector<Cell_key>>* m_new_leaves = nullptr; // during balance()
   std::vector<Cell_key> m_unbalanced; // leaves made since the last balance()
+  std::string m_depth_limit;          // set when precision lowered the maximum depth
+  std::size_t m_max_leaves = (std::numeric_limits<std::size_t>::max)();
 };
 
 } // namespace Quad_mesher_2

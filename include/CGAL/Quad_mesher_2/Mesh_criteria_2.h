@@ -59,6 +59,10 @@ public:
   int max_depth() const { return m_max_depth; }
   bool use_point_spacing() const { return m_use_point_spacing; }
   bool points_as_vertices() const { return m_points_as_vertices; }
+  /// the most quadtree leaves a mesher may make before it stops with `Meshing_error`: a guard
+  /// against exhausting memory (about 250 bytes per leaf with Epick)
+  std::size_t max_cells() const { return m_max_cells; }
+  void set_max_cells(std::size_t n) { m_max_cells = n; }
   const Sizing_field& sizing_field() const { return m_sizing_field; }
 
   void set_max_size(double s) { check_size(s, "maximum size"); m_max_size = s; check_order(); }
@@ -93,6 +97,7 @@ private:
   int m_max_depth = default_max_depth;
   bool m_use_point_spacing = true;
   bool m_points_as_vertices = true;
+  std::size_t m_max_cells = std::size_t(1) << 25;
   Sizing_field m_sizing_field;
 };
 

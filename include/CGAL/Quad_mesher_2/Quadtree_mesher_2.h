@@ -79,6 +79,7 @@ public:
     check_finite();
     merge_duplicate_points();
     m_tree = std::make_unique<Quadtree>(bounding_box(), m_criteria.max_depth(), m_traits);
+    m_tree->set_max_leaves(m_criteria.max_cells());
     compute_point_spacing();
     refine_to_max_size();
     if(m_criteria.use_point_spacing())
@@ -91,7 +92,7 @@ public:
       std::vector<int> levels(m_points.size());
       for(std::size_t i = 0; i < m_points.size(); ++i)
         levels[i] = point_level(i, 1);
-      m_anchors = internal::anchor_points(*m_tree, m_points, levels);
+      m_anchors = internal::anchor_points(*m_tree, m_points, levels, m_input_index);
     } else {
       m_tree->balance();
     }
@@ -133,6 +134,8 @@ public:
 
   /// the input points without exact duplicates, in input order
   const std::vector<Point_2>& points() const { return m_points; }
+  /// for each point of `points()`, its index in the domain's points
+  const std::vector<std::size_t>& input_indices() const { return m_input_index; }
   /// how many input points were exact duplicates of an earlier one (merged)
   std::size_t number_of_merged_points() const { return m_domain.points.size() - m_points.size(); }
   /// for each point of `points()`, its vertex in the mesh (after `insert_points()`)
@@ -186,9 +189,12 @@ private:
       if(equal(m_domain.points[order[k]], m_domain.points[order[k - 1]]))
         duplicate[order[k]] = true;
     m_points.clear();
+    m_input_index.clear();
     for(std::size_t i = 0; i < m_domain.points.size(); ++i)
-      if(!duplicate[i])
+      if(!duplicate[i]) {
         m_points.push_back(m_domain.points[i]);
+        m_input_index.push_back(i);
+      }
   }
 
   typename GeomTraits::Iso_rectangle_2 bounding_box() const
@@ -240,13 +246,13 @@ private:
       return min_size_level();
     std::ostringstream msg;
     msg.precision(17);
-    msg << "input points " << i << " (" << m_xy[i][0] << ", " << m_xy[i][1] << ") and "
-        << m_nearest[i] << " (" << m_xy[m_nearest[i]][0] << ", " << m_xy[m_nearest[i]][1]
-        << ") are " << m_spacing[i] << " apart: separating them needs quadtree depth " << level
-        << ", beyond the maximum depth " << m_criteria.max_depth();
+    msg << "input points " << m_input_index[i] << " (" << m_xy[i][0] << ", " << m_xy[i][1]
+        << ") and " << m_input_index[m_nearest[i]] << " (" << m_xy[m_nearest[i]][0] << ", "
+        << m_xy[m_nearest[i]][1]
+        << ") (0-based) are " << m_spacing[i] << " apart: separating them needs quadtree depth " << level
+        << ", beyond " << m_tree->depth_limit();
     if(m_criteria.min_size() > 0)
       msg << " or the minimum size " << m_criteria.min_size();
-    msg << "; raise the maximum depth";
     throw Meshing_error(msg.str());
   }
 
@@ -259,9 +265,9 @@ private:
   int min_size_level() const
   {
     if(m_criteria.min_size() <= 0)
-      return m_criteria.max_depth();
+      return m_tree->max_depth();
     int l = int(std::floor(std::log2(m_tree->root_side() / m_criteria.min_size())));
-    return (std::min)((std::max)(l, 0), m_criteria.max_depth());
+    return (std::min)((std::max)(l, 0), m_tree->max_depth());
   }
 
   void refine_to_max_size()
@@ -269,10 +275,12 @@ private:
     if(m_criteria.max_size() <= 0)
       return;
     const int level = level_for_size(m_criteria.max_size());
-    if(level > m_criteria.max_depth())
-      throw Meshing_error("the maximum size " + std::to_string(m_criteria.max_size())
-                          + " needs quadtree depth " + std::to_string(level)
-                          + ", beyond the maximum depth " + std::to_string(m_criteria.max_depth()));
+    if(level > m_tree->max_depth()) {
+      std::ostringstream msg;
+      msg << "the maximum size " << m_criteria.max_size() << " needs quadtree depth " << level
+          << ", beyond " << m_tree->depth_limit();
+      throw Meshing_error(msg.str());
+    }
     m_tree->refine([&](const Cell_key& k) { return k.level < level; });
   }
 
@@ -311,6 +319,7 @@ private:
   Mesh_criteria_2<GeomTraits> m_criteria;
   GeomTraits m_traits;
   std::vector<Point_2> m_points;                // input points, duplicates merged
+  std::vector<std::size_t> m_input_index;       // of each in m_domain.points
   std::vector<std::array<double, 2>> m_xy;      // their coordinates, for sizing only
   std::vector<double> m_spacing;                // s_i = min_j d_ij
   std::vector<std::size_t> m_nearest;           // the j of s_i

@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <filesystem>
 #include <fstream>
 #include <istream>
 #include <limits>
@@ -183,6 +184,11 @@ inline bool slurp(std::istream& in, std::string& text, const std::string& source
 inline bool slurp_file(const std::string& filename, std::string& text, std::string& msg)
 {
   text.clear();
+  std::error_code ec;
+  if(std::filesystem::is_directory(filename, ec)) {
+    msg = filename + ": is a directory, not a file";
+    return false;
+  }
   errno = 0;
   std::ifstream in(filename, std::ios::in | std::ios::binary);
   if(!in) {
@@ -194,7 +200,12 @@ inline bool slurp_file(const std::string& filename, std::string& text, std::stri
   const std::streamoff size = in.tellg();
   in.seekg(0, std::ios::beg);
   if(size > 0) {
-    text.resize(static_cast<std::size_t>(size));
+    try {
+      text.resize(static_cast<std::size_t>(size));
+    } catch(const std::exception&) {
+      msg = filename + ": cannot read a file of " + std::to_string(size) + " bytes into memory";
+      return false;
+    }
     in.read(&text[0], size);
     if(in.gcount() != size) { msg = filename + ": read error (file could not be read completely)"; text.clear(); return false; }
   } else if(size < 0 || !in) {

@@ -18,23 +18,23 @@ namespace Quad_mesher_2 {
 namespace internal {
 
 // For each point, the distance to its nearest other point and that point's index (a size
-// field only, so doubles suffice). A balanced k-d tree: O(n log n) for any distribution,
-// including all points on one line, where a sweep would go quadratic.
+// field only, so doubles suffice). A balanced k-d tree that splits each node across its
+// wider extent, so that points sharing a coordinate (all on one line) still prune.
 class Nearest_neighbor_distances
 {
 public:
   typedef std::array<double, 2> P;
 
   explicit Nearest_neighbor_distances(const std::vector<P>& points)
-    : m_points(points), m_order(points.size())
+    : m_points(points), m_order(points.size()), m_axis(points.size())
   {
     std::iota(m_order.begin(), m_order.end(), std::size_t(0));
-    build(0, m_order.size(), 0);
+    build(0, m_order.size());
     distance.assign(points.size(), std::numeric_limits<double>::infinity());
     neighbor.assign(points.size(), std::size_t(-1));
     for(std::size_t i = 0; i < points.size(); ++i) {
       double best2 = std::numeric_limits<double>::infinity();
-      query(0, m_order.size(), 0, i, best2);
+      query(0, m_order.size(), i, best2);
       distance[i] = std::sqrt(best2);
     }
   }
@@ -43,22 +43,31 @@ public:
   std::vector<std::size_t> neighbor;
 
 private:
-  void build(std::size_t b, std::size_t e, int axis)
+  void build(std::size_t b, std::size_t e)
   {
     if(e - b <= 1)
       return;
     std::size_t m = b + (e - b) / 2;
+    double lo[2] = { HUGE_VAL, HUGE_VAL }, hi[2] = { -HUGE_VAL, -HUGE_VAL };
+    for(std::size_t k = b; k < e; ++k)
+      for(int a = 0; a < 2; ++a) {
+        lo[a] = (std::min)(lo[a], m_points[m_order[k]][a]);
+        hi[a] = (std::max)(hi[a], m_points[m_order[k]][a]);
+      }
+    const int axis = hi[0] - lo[0] >= hi[1] - lo[1] ? 0 : 1;
+    m_axis[m] = static_cast<unsigned char>(axis);
     std::nth_element(m_order.begin() + b, m_order.begin() + m, m_order.begin() + e,
                      [&](std::size_t u, std::size_t v) { return m_points[u][axis] < m_points[v][axis]; });
-    build(b, m, 1 - axis);
-    build(m + 1, e, 1 - axis);
+    build(b, m);
+    build(m + 1, e);
   }
 
-  void query(std::size_t b, std::size_t e, int axis, std::size_t i, double& best2)
+  void query(std::size_t b, std::size_t e, std::size_t i, double& best2)
   {
     if(b >= e)
       return;
     std::size_t m = b + (e - b) / 2;
+    const int axis = m_axis[m];
     std::size_t c = m_order[m];
     const P& p = m_points[i];
     if(c != i) {
@@ -71,18 +80,19 @@ private:
     }
     double delta = p[axis] - m_points[c][axis];
     if(delta < 0) {
-      query(b, m, 1 - axis, i, best2);
-      if(delta * delta <= best2)
-        query(m + 1, e, 1 - axis, i, best2);
+      query(b, m, i, best2);
+      if(delta * delta < best2)
+        query(m + 1, e, i, best2);
     } else {
-      query(m + 1, e, 1 - axis, i, best2);
-      if(delta * delta <= best2)
-        query(b, m, 1 - axis, i, best2);
+      query(m + 1, e, i, best2);
+      if(delta * delta < best2)
+        query(b, m, i, best2);
     }
   }
 
   const std::vector<P>& m_points;
   std::vector<std::size_t> m_order;
+  std::vector<unsigned char> m_axis; // split axis of the node whose median sits at each position
 };
 
 } // namespace internal
