@@ -19,7 +19,9 @@ int main(int argc, char** argv)
     std::cerr << error << std::endl;
     return 1;
   }
-  QM::Quadtree_mesher_2<K> mesher(domain);
+  QM::Mesh_criteria_2<K> criteria;
+  criteria.set_points_as_vertices(false); // stage 1 alone: no refinement around the points
+  QM::Quadtree_mesher_2<K> mesher(domain, criteria);
   mesher.build_quadtree();
   QM::Quad_mesh_2<K::Point_2> mesh = mesher.core_mesh();
   std::cout << domain.points.size() << " input points -> " << mesher.quadtree().number_of_leaves()

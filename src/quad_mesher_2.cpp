@@ -214,8 +214,8 @@ int main(int argc, char** argv)
   app.add_option("--max-size", opt.max_size, "largest cell side (0: no bound)")
     ->check(CLI::NonNegativeNumber);
   app.add_option("--min-size", opt.min_size,
-                 "smallest cell side (0: no bound); input points closer than this may share a "
-                 "cell")
+                 "smallest cell side (0: no bound); with --stop-after quadtree input points "
+                 "closer than this may share a cell, with the points stage they are an error")
     ->check(CLI::NonNegativeNumber);
   app.add_option("--max-depth", opt.max_depth,
                  "deepest quadtree level; a sizing that needs more is an error")

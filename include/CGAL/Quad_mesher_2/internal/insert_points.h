@@ -35,11 +35,12 @@ namespace internal {
 //  - R = 3 otherwise, at level M0 with the nearest W (|dx|, |dy| <= g/2): ring 1 moves by
 //    3d/4, ring 2 by 3d/8. Relative to any quad the displacement is at most 3g/16 per axis:
 //    angles in [72.05°, 115.99°], aspect ratio at most 1.281 at P (Lemma 1 asks for 1.5) and
-//    1.442 elsewhere. A radius-2 tent cannot do both: moving ring 1 by d/2 gives aspect 1.61
-//    at P, and any larger factor pushes an angle past 135°.
+//    1.442 elsewhere. A radius-2 tent barely can: moving ring 1 by d/2 gives aspect 1.61 at
+//    P, only factors near 0.58-0.59 meet both bounds there, and then other quads reach 1.73.
 // test_insert_points.cpp samples d to check these bounds. Blocks of different anchors never
 // share a cell, so no vertex moves twice; crowded blocks go one level deeper until none is.
-// The factors are dyadic, so under Epick a moved vertex carries at most one rounding.
+// Under Epick the moved vertices carry a few roundings of their coordinates; the bounds have
+// degrees of room for them. Under Epeck they are exact.
 struct Point_anchor
 {
   std::size_t point; // index of the input point
