@@ -62,7 +62,8 @@ bool block_in_grid(const Tree& tree, const Point_anchor& a)
          && tree.in_grid(a.level, a.X + a.radius, a.Y + a.radius);
 }
 
-// The anchor of point p for base level `level`: a radius-1 tent at level or level+1 if p is within a quarter cell of a lattice vertex there, else a radius-3 tent at level.
+// The anchor of point p for base level `level`: a radius-1 tent at level or level+1 if p is
+// within 3g/16 of a lattice vertex there, else a radius-3 tent at level.
 // Returns false if the block does not fit in the grid.
 template <class Tree, class Point_2>
 bool choose_anchor(const Tree& tree, const Point_2& p, int level, Point_anchor& a)
