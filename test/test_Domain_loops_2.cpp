@@ -572,3 +572,5 @@ TEST(Domain_loops_2, ExactPredicatesNearlyCollinear)
 }
 
 } // namespace qm2_test_loops
+
+#undef QM2_EXPECT_ERROR
