@@ -79,7 +79,8 @@ public:
   double lattice_y(int level, std::int64_t y) const { return m_oy + double(y) * cell_side(level); }
   Point_2 lattice_point(int level, std::int64_t x, std::int64_t y) const
   {
-    return m_traits.construct_point_2_object()(FT(lattice_x(level, x)), FT(lattice_y(level, y)));
+    // From the doubles themselves: a lazy kernel then keeps one node per point, not three.
+    return m_traits.construct_point_2_object()(lattice_x(level, x), lattice_y(level, y));
   }
   std::uint32_t cells_x(int level) const { return m_nx << level; }
   std::uint32_t cells_y(int level) const { return m_ny << level; }
