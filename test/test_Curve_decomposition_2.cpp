@@ -283,6 +283,42 @@ TEST(CurveDecomposition, CircleMeetsBothCriteriaWithAboutTheNeededVertices)
   }
 }
 
+TEST(CurveDecomposition, RefinementAloneMeetsTheCriteria)
+{
+  // Step 2 of the decomposition (check, then halve what fails) without the placement by
+  // curvature: it must reach both criteria by itself, and needs more vertices for it (halving
+  // overshoots: 45° spans become 16 pieces of 2.8°, not 10 of 4.5°).
+  for(const auto& limits : {std::array<double, 2>{5, 0}, std::array<double, 2>{60, 1e-5}}) {
+    const std::vector<Point_2> c = ellipse(8, 1, 1);
+    const Spline s(c);
+    const double tol = limits[1] > 0 ? limits[1] : 1e-3 * bbox_diagonal(c);
+    const std::vector<double> params = CGAL::Quad_mesher_2::internal::curves_decompose_parameters(
+        s, limits[0] * pi / 180, tol, 1u << 20, "test", false);
+    std::vector<Point_2> poly;
+    std::size_t knot = 0;
+    for(double u : params) {
+      if(knot < c.size() && u == s.knot(knot)) {
+        poly.push_back(c[knot++]);
+      } else {
+        const V p = s.point(u);
+        poly.push_back(Point_2(p[0], p[1]));
+      }
+    }
+    ASSERT_EQ(knot, c.size());
+    EXPECT_LE(max_turning_deg(poly), limits[0] + 1e-9);
+    double off = 0;
+    const std::vector<double> err = chord_errors(s, c, poly, off);
+    EXPECT_LE(*std::max_element(err.begin(), err.end()), tol);
+    Options o;
+    o.max_turning_angle_deg = limits[0];
+    o.max_chord_error = limits[1];
+    const std::size_t placed = CGAL::Quad_mesher_2::decompose_closed_spline<K>(c, o).size();
+    EXPECT_GT(poly.size(), placed) << "placement by curvature should need fewer vertices than halving";
+    std::cout << "[ vertices ] circle of 8 points, " << limits[0] << " deg, tol " << tol << ": halving " << poly.size()
+              << ", by curvature " << placed << "\n";
+  }
+}
+
 TEST(CurveDecomposition, EllipseIsDenseAtTheEnds)
 {
   const std::vector<Point_2> c = ellipse(24, 10, 1);

@@ -315,10 +315,12 @@ Domain_2<K> curves_polygon_domain(const std::vector<typename K::Point_2>& poly)
 
 /// The work of `decompose_closed_spline()`, on validated options with a resolved tolerance.
 /// Returns, for each output vertex in order, its parameter on the spline; the vertex of
-/// parameter `knot(i)` is control point `i`.
+/// parameter `knot(i)` is control point `i`. `place_by_curvature == false` skips step 1 (the
+/// spans are then only halved until they pass: a test of step 2 alone).
 template <class K>
 std::vector<double> curves_decompose_parameters(const Closed_cubic_spline_2<K>& spline, double max_angle,
-                                                double tol, std::size_t max_points, const std::string& what)
+                                                double tol, std::size_t max_points, const std::string& what,
+                                                bool place_by_curvature = true)
 {
   typedef std::array<double, 2> V;
   const std::size_t n = spline.number_of_points();
@@ -351,7 +353,7 @@ std::vector<double> curves_decompose_parameters(const Closed_cubic_spline_2<K>& 
       if(k > 0) cumulative[i][k] = cumulative[i][k - 1] + 0.5 * (prev + g) * (h / samples);
       prev = g;
     }
-    const double need = std::ceil(cumulative[i][samples]);
+    const double need = place_by_curvature ? std::ceil(cumulative[i][samples]) : 1.0;
     total += (std::max)(1.0, need);
     if(!(total <= static_cast<double>(max_points)))  // also catches NaN
       throw Meshing_error(what + ": decomposing it needs more than max_points_per_loop = " + std::to_string(max_points) +
