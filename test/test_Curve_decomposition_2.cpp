@@ -319,6 +319,25 @@ TEST(CurveDecomposition, RefinementAloneMeetsTheCriteria)
   }
 }
 
+TEST(CurveDecomposition, ThreePointsAreEnough)
+{
+  // The smallest closed spline: the cyclic system is then a full 3x3 matrix (corners and
+  // off-diagonals coincide), which the Sherman-Morrison solve must still handle.
+  const std::vector<Point_2> c = {Point_2(0, 0), Point_2(4, 0), Point_2(1, 3)};
+  const Spline s(c);
+  for(std::size_t i = 0; i < 3; ++i) {
+    const std::size_t prev = (i + 2) % 3;
+    for(int order = 1; order <= 2; ++order) {
+      const V l = s.eval(prev, s.knot(prev + 1) - s.knot(prev), order), r = s.eval(i, 0, order);
+      EXPECT_NEAR(l[0], r[0], 1e-9);
+      EXPECT_NEAR(l[1], r[1], 1e-9);
+    }
+  }
+  const std::vector<Point_2> poly = decompose_and_check(c);
+  EXPECT_GE(poly.size(), 72u);
+  EXPECT_GT(signed_area(poly), 0);
+}
+
 TEST(CurveDecomposition, EllipseIsDenseAtTheEnds)
 {
   const std::vector<Point_2> c = ellipse(24, 10, 1);

@@ -556,7 +556,9 @@ std::vector<typename K::Point_2> decompose_closed_spline(const std::vector<typen
 /// The returned domain keeps all of `domain.points` at their indices (so control points and
 /// points on no segment keep their numbers in messages) and appends the new vertices; its
 /// segments are rebuilt loop by loop, with the domain on the left of each (outer loops
-/// counterclockwise, holes clockwise), and its hole points are `domain.holes`. A point cloud
+/// counterclockwise, holes clockwise; the paper lists its curves clockwise, this package's
+/// convention is the one `extract_loops()` normalises to), and its hole points are
+/// `domain.holes`. A point cloud
 /// (no segments) is returned unchanged. The default tolerance is 1e-3 of the diagonal of the
 /// bounding box of all the domain's points, so that every loop is held to the same absolute
 /// error.
