@@ -20,6 +20,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -249,16 +250,31 @@ double perimeter(const Domain& d)
   return l;
 }
 
-// The area between the boundary and the core on a mesh of quads no larger than h. Criterion 2
-// removes points within a quad diameter (sqrt(2) h) of the boundary, criterion 3 within
-// eps_s + diameter <= (0.5 + sqrt(2)) h, so away from single elements the lost area lies in
-// the inner band of width w = (0.5 + sqrt(2)) h < 2h, whose area is at most the perimeter
-// times w plus a disc of radius w per boundary vertex (the offset arcs at reflex corners).
-// We allow w = 2h; single elements (a few quads along the band) fit in the slack.
-double lost_area_bound(const Domain& d, double h)
+// An upper bound on the area between the boundary and the core, for an input mesh whose
+// quads are no larger than smax. Criterion 2 removes points within a quad diameter
+// (sqrt(2) smax) of the boundary, criterion 3 within eps_s + diameter <= (0.5 + sqrt(2)) smax,
+// so, single elements aside, the lost area lies in the band of points of the domain within
+// w = (0.5 + sqrt(2)) smax < 1.92 smax of the boundary. That band's area is at most the
+// perimeter times w, plus at each reflex corner the sector the offset curve sweeps there,
+// at most pi w^2 (the coarea formula: the level curves at distance t are no longer than the
+// boundary plus their arcs t * (turning angle) at the reflex corners). Single elements are
+// quads in the band's outer layer; we allow w = 2 smax for them: 4% slack. Measured on the
+// discs and the square with a hole: 55-60% of the bound; removing out to 4 eps_s instead of
+// eps_s exceeds it. On graded meshes (Lake Superior) smax is the coarse interior size and the
+// bound is loose (the loss there is 20% of it).
+double lost_area_bound(const Input& in)
 {
-  const double w = 2 * h;
-  return perimeter(d) * w + double(d.points.size()) * pi * w * w;
+  const double smax = *std::max_element(in.size.begin(), in.size.end());
+  const double w = 2 * smax;
+  std::size_t reflex = 0;
+  for(const auto& loop : in.loops.loops) {
+    const auto& v = loop.vertices;
+    for(std::size_t i = 0; i < v.size(); ++i)
+      reflex += CGAL::orientation(in.domain.points[v[(i + v.size() - 1) % v.size()]], in.domain.points[v[i]],
+                                  in.domain.points[v[(i + 1) % v.size()]]) == CGAL::RIGHT_TURN
+                  ? 1 : 0;  // the domain is on the left of every loop: right turns are reflex
+  }
+  return perimeter(in.domain) * w + double(reflex) * pi * w * w;
 }
 
 // ---- hand-made grids: each rule with a known answer ----------------------------------------
@@ -386,7 +402,7 @@ TEST(Buffer_zone_clearance, disc_core_is_a_thin_buffer_away)
     const double area = CGAL::to_double(QM::domain_area(in.domain, in.loops));
     const double lost = area - core_area(r.core);
     EXPECT_GT(lost, 0);
-    EXPECT_LT(lost, lost_area_bound(in.domain, h)) << "h=" << h;
+    EXPECT_LT(lost, lost_area_bound(in)) << "h=" << h;
     // The core is one piece with one boundary loop: Euler characteristic V - E + F = 1.
     EXPECT_EQ(euler_characteristic(r.core), 1);
   }
@@ -402,7 +418,7 @@ TEST(Buffer_zone_clearance, square_with_a_square_hole)
   EXPECT_NEAR(area, 1 - 0.3 * 0.3, 1e-12);
   const double lost = area - core_area(r.core);
   EXPECT_GT(lost, 0);
-  EXPECT_LT(lost, lost_area_bound(in.domain, h));
+  EXPECT_LT(lost, lost_area_bound(in));
   // An annulus: Euler characteristic 0.
   EXPECT_EQ(euler_characteristic(r.core), 0);
 }
@@ -466,7 +482,8 @@ TEST(Buffer_zone_clearance, lake_superior)
   const double area = CGAL::to_double(QM::domain_area(in.domain, in.loops));
   const double lost = area - core_area(r.core);
   EXPECT_GT(lost, 0);
-  EXPECT_LT(lost, lost_area_bound(in.domain, 0.004));
+  EXPECT_LT(lost, lost_area_bound(in));
+  std::printf("lake superior: area %g, lost %g, bound %g\n", area, lost, lost_area_bound(in));
 
   std::vector<std::pair<Point, Point>> segments;
   for(const auto& s : in.domain.segments) segments.emplace_back(in.domain.points[s[0]], in.domain.points[s[1]]);
