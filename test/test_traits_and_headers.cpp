@@ -38,6 +38,15 @@ struct Archetype_traits
   typedef K::Less_y_2 Less_y_2;
   typedef K::Less_xy_2 Less_xy_2;
   typedef K::Equal_2 Equal_2;
+  // for the boundary loops (Domain_loops_2.h)
+  typedef K::Segment_2 Segment_2;
+  typedef K::Compare_x_2 Compare_x_2;
+  typedef K::Orientation_2 Orientation_2;
+  typedef K::Collinear_are_ordered_along_line_2 Collinear_are_ordered_along_line_2;
+  typedef K::Compute_area_2 Compute_area_2;
+  typedef K::Construct_bbox_2 Construct_bbox_2;
+  typedef K::Construct_segment_2 Construct_segment_2;
+  typedef K::Do_intersect_2 Do_intersect_2;
   typedef K::Construct_point_2 Construct_point_2;
   typedef K::Construct_iso_rectangle_2 Construct_iso_rectangle_2;
 
@@ -51,6 +60,16 @@ struct Archetype_traits
   Less_y_2 less_y_2_object() const { return K().less_y_2_object(); }
   Less_xy_2 less_xy_2_object() const { return K().less_xy_2_object(); }
   Equal_2 equal_2_object() const { return K().equal_2_object(); }
+  Compare_x_2 compare_x_2_object() const { return K().compare_x_2_object(); }
+  Orientation_2 orientation_2_object() const { return K().orientation_2_object(); }
+  Collinear_are_ordered_along_line_2 collinear_are_ordered_along_line_2_object() const
+  {
+    return K().collinear_are_ordered_along_line_2_object();
+  }
+  Compute_area_2 compute_area_2_object() const { return K().compute_area_2_object(); }
+  Construct_bbox_2 construct_bbox_2_object() const { return K().construct_bbox_2_object(); }
+  Construct_segment_2 construct_segment_2_object() const { return K().construct_segment_2_object(); }
+  Do_intersect_2 do_intersect_2_object() const { return K().do_intersect_2_object(); }
   Construct_point_2 construct_point_2_object() const { return K().construct_point_2_object(); }
   Construct_iso_rectangle_2 construct_iso_rectangle_2_object() const
   {
@@ -67,6 +86,13 @@ TEST(QuadMesherTraits_2, archetype_is_enough_for_the_mesher)
   auto mesh = mesher.run();
   EXPECT_TRUE(qm2_checks::is_conforming(mesh));
   EXPECT_TRUE(mesher.quadtree().is_strongly_balanced());
+  // a domain with a boundary loop (narrow-region sizing, loop validation)
+  CGAL::Quad_mesher_2::Domain_2<Archetype_traits> square;
+  square.points = { K::Point_2(0, 0), K::Point_2(1, 0), K::Point_2(1, 1), K::Point_2(0, 1) };
+  square.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 } };
+  CGAL::Quad_mesher_2::Quadtree_mesher_2<Archetype_traits> domain_mesher(square, criteria);
+  EXPECT_TRUE(qm2_checks::is_conforming(domain_mesher.run(CGAL::Quad_mesher_2::Stage::QUADTREE)));
+  EXPECT_EQ(domain_mesher.loops().loops.size(), 1u);
 }
 
 TEST(Header_hygiene, include_guards_spell_their_paths)

@@ -59,6 +59,11 @@ public:
   int max_depth() const { return m_max_depth; }
   bool use_point_spacing() const { return m_use_point_spacing; }
   bool points_as_vertices() const { return m_points_as_vertices; }
+  /// With segments in the input: refine so that every narrow region (two parts of the
+  /// boundary facing each other across a gap w) has cells of side <= w/3 across it (paper
+  /// §4.2: more than two cells in every direction, so no loop merges or vanishes).
+  bool resolve_narrow_regions() const { return m_resolve_narrow_regions; }
+  void set_resolve_narrow_regions(bool b) { m_resolve_narrow_regions = b; }
   /// the most quadtree leaves a mesher may make before it stops with `Meshing_error`: a guard
   /// against exhausting memory (about 250 bytes per leaf with Epick)
   std::size_t max_cells() const { return m_max_cells; }
@@ -97,6 +102,7 @@ private:
   int m_max_depth = default_max_depth;
   bool m_use_point_spacing = true;
   bool m_points_as_vertices = true;
+  bool m_resolve_narrow_regions = true;
   std::size_t m_max_cells = std::size_t(1) << 25;
   Sizing_field m_sizing_field;
 };

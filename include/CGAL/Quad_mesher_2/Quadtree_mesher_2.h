@@ -7,10 +7,12 @@
 
 #include <CGAL/Quad_mesher_2/Balanced_quadtree_2.h>
 #include <CGAL/Quad_mesher_2/Domain_2.h>
+#include <CGAL/Quad_mesher_2/Domain_loops_2.h>
 #include <CGAL/Quad_mesher_2/Mesh_criteria_2.h>
 #include <CGAL/Quad_mesher_2/Meshing_error.h>
 #include <CGAL/Quad_mesher_2/Quad_mesh_2.h>
 #include <CGAL/Quad_mesher_2/internal/apply_templates.h>
+#include <CGAL/Quad_mesher_2/internal/boundary_sizing.h>
 #include <CGAL/Quad_mesher_2/internal/insert_points.h>
 #include <CGAL/Quad_mesher_2/internal/nearest_neighbor_distances.h>
 
@@ -86,6 +88,8 @@ public:
       refine_to_point_spacing();
     if(m_criteria.sizing_field())
       refine_to_sizing_field();
+    if(!m_domain.is_point_cloud() && m_criteria.resolve_narrow_regions())
+      refine_narrow_regions();
     record("refine", start);
     start = std::chrono::steady_clock::now();
     if(m_criteria.points_as_vertices()) {
@@ -134,6 +138,9 @@ public:
 
   /// the input points without exact duplicates, in input order
   const std::vector<Point_2>& points() const { return m_points; }
+  /// the validated, oriented boundary loops (empty for a point cloud or when narrow regions
+  /// are not resolved)
+  const Domain_loops_2<GeomTraits>& loops() const { return m_loops; }
   /// for each point of `points()`, its index in the domain's points
   const std::vector<std::size_t>& input_indices() const { return m_input_index; }
   /// how many input points were exact duplicates of an earlier one (merged)
@@ -294,6 +301,26 @@ private:
     }
   }
 
+  // Paper §4.2: more than two cells across every narrow region. Validates the loops too.
+  void refine_narrow_regions()
+  {
+    m_loops = extract_loops(m_domain, m_traits);
+    auto make_point = m_traits.construct_point_2_object();
+    for(const internal::Size_sample& s : internal::narrow_region_samples(m_domain, m_loops, m_traits)) {
+      const int level = level_for_size(s.size);
+      if(level > m_tree->max_depth()) {
+        std::ostringstream msg;
+        msg << "a narrow region of width " << 3 * s.size << " near (" << s.point[0] << ", "
+            << s.point[1] << ") needs quadtree depth " << level << ", beyond "
+            << m_tree->depth_limit();
+        throw Meshing_error(msg.str());
+      }
+      const Point_2 p = make_point(s.point[0], s.point[1]);
+      if(level > 0 && m_tree->contains(p))
+        m_tree->refine_at(p, level);
+    }
+  }
+
   void refine_to_sizing_field()
   {
     const auto& field = m_criteria.sizing_field();
@@ -324,6 +351,7 @@ private:
   std::vector<double> m_spacing;                // s_i = min_j d_ij
   std::vector<std::size_t> m_nearest;           // the j of s_i
   std::unique_ptr<Quadtree> m_tree;
+  Domain_loops_2<GeomTraits> m_loops;           // of a domain with segments
   std::vector<internal::Point_anchor> m_anchors;
   std::vector<std::uint64_t> m_vertex_keys;     // of the core mesh's vertices
   std::vector<std::size_t> m_point_vertices;

@@ -1,0 +1,95 @@
+// Copyright (c) 2026 Quad_mesher_2 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Quad_mesher_2 developers
+//
+// Narrow regions (paper §4.2): more than two quadtree cells across every gap between two
+// parts of the boundary; sharp corners are not narrow regions.
+
+#include "qm2_mesh_checks.h"
+#include "qm2_test_kernel.h"
+
+#include <CGAL/Quad_mesher_2/Quadtree_mesher_2.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace qm2_test_narrow {
+
+using qm2_test::K;
+namespace QM = CGAL::Quad_mesher_2;
+
+void close_loop(QM::Domain_2<K>& d, std::size_t first)
+{
+  for(std::size_t v = first; v + 1 < d.points.size(); ++v)
+    d.segments.push_back({ v, v + 1 });
+  d.segments.push_back({ d.points.size() - 1, first });
+}
+
+// Two unit discs centred at (-2, 0) and (2, 0), joined by a channel of width 2h whose walls
+// are single long segments (so that point spacing alone would not refine the channel), CCW.
+QM::Domain_2<K> dumbbell(double h, int n = 64)
+{
+  QM::Domain_2<K> d;
+  const double t = std::asin(h);
+  for(int k = 0; k <= n; ++k) { // left disc, from the channel's top round to its bottom
+    const double a = t + (2 * M_PI - 2 * t) * k / n;
+    d.points.emplace_back(-2 + std::cos(a), std::sin(a));
+  }
+  for(int k = 0; k <= n; ++k) { // right disc
+    const double a = M_PI + t + (2 * M_PI - 2 * t) * k / n;
+    d.points.emplace_back(2 + std::cos(a), std::sin(a));
+  }
+  close_loop(d, 0);
+  return d;
+}
+
+QM::Mesh_criteria_2<K> quadtree_only()
+{
+  QM::Mesh_criteria_2<K> c;
+  c.set_points_as_vertices(false);
+  return c;
+}
+
+TEST(Narrow_regions, more_than_two_cells_across_a_channel)
+{
+  for(double h : { 0.01, 0.001 }) {
+    QM::Domain_2<K> d = dumbbell(h);
+    QM::Quadtree_mesher_2<K> mesher(d, quadtree_only());
+    auto mesh = mesher.run(QM::Stage::QUADTREE);
+    const auto& tree = mesher.quadtree();
+    double worst = 0;
+    for(int k = 0; k <= 200; ++k) // along the channel's axis, and along both walls
+      for(double y : { 0.0, 0.99 * h, -0.99 * h }) {
+        K::Point_2 p(-0.9 + 1.8 * k / 200, y);
+        worst = (std::max)(worst, tree.cell_side(tree.locate(p).level));
+      }
+    EXPECT_LT(worst, 2 * h / 2) << "h = " << h; // strictly more than two cells across 2h
+    EXPECT_TRUE(qm2_checks::is_conforming(mesh));
+    // without the narrow-region rule the channel would get far larger cells
+    QM::Mesh_criteria_2<K> off = quadtree_only();
+    off.set_resolve_narrow_regions(false);
+    QM::Quadtree_mesher_2<K> coarse(d, off);
+    coarse.run(QM::Stage::QUADTREE);
+    EXPECT_GT(coarse.quadtree().cell_side(coarse.quadtree().locate(K::Point_2(0, 0)).level), 2 * h);
+  }
+}
+
+TEST(Narrow_regions, a_sharp_corner_is_not_a_narrow_region)
+{
+  QM::Domain_2<K> d; // a 5-degree needle
+  d.points = { K::Point_2(0, 0), K::Point_2(1, std::tan(2.5 * M_PI / 180)), K::Point_2(1, -std::tan(2.5 * M_PI / 180)) };
+  d.segments = { { 0, 2 }, { 2, 1 }, { 1, 0 } };
+  QM::Quadtree_mesher_2<K> mesher(d, quadtree_only());
+  mesher.run(QM::Stage::QUADTREE);
+  EXPECT_LE(mesher.quadtree().depth(), 8);
+}
+
+TEST(Narrow_regions, invalid_loops_are_reported)
+{
+  QM::Domain_2<K> d = dumbbell(0.01, 16);
+  d.segments.pop_back(); // open the loop
+  EXPECT_THROW(QM::Quadtree_mesher_2<K>(d, quadtree_only()).run(QM::Stage::QUADTREE), QM::Meshing_error);
+}
+
+} // namespace qm2_test_narrow
