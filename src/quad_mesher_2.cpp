@@ -94,7 +94,9 @@ int run(const Options& opt)
   // the quadtree stage alone does not refine for point insertion
   criteria.set_points_as_vertices(opt.stop_after != "quadtree");
   QM::Quadtree_mesher_2<K> mesher(domain, criteria);
-  const QM::Stage last = opt.stop_after == "quadtree" ? QM::Stage::QUADTREE : QM::Stage::POINTS;
+  const QM::Stage last = opt.stop_after == "quadtree" ? QM::Stage::QUADTREE
+                         : opt.stop_after == "points" ? QM::Stage::POINTS
+                                                      : QM::Stage::CLEARANCE;
   QM::Quad_mesh_2<typename K::Point_2> mesh = mesher.run(last);
   if(mesher.number_of_merged_points() > 0)
     std::cerr << "quad-mesher: " << opt.input << ": merged " << mesher.number_of_merged_points()
@@ -156,6 +158,13 @@ int run(const Options& opt)
                          { "hanging_nodes", quality.number_of_hanging_nodes },
                          { "duplicate_vertices", quality.number_of_duplicate_vertices },
                          { "boundary_loops", quality.number_of_boundary_loops } };
+  if(last >= QM::Stage::CLEARANCE) {
+    const auto& removed = mesher.removed_by_clearance();
+    report["clearance_removed"] = { { "outside", removed[0] },
+                                    { "crossing_boundary", removed[1] },
+                                    { "near_boundary", removed[2] },
+                                    { "single_or_pinched", removed[3] } };
+  }
   report["points_as_vertices"] = mesher.point_vertices().size();
   report["max_aspect_ratio_at_points"] = QM::max_aspect_ratio_around(mesh, mesher.point_vertices());
   report["quadtree_depth"] = tree.depth();
@@ -209,8 +218,10 @@ int main(int argc, char** argv)
   app.add_option("--stop-after", opt.stop_after,
                  "last pipeline stage to run: 'quadtree' writes the strongly balanced, templated "
                  "quadtree mesh of the input's bounding grid (paper Fig. 3(b)); 'points' (the "
-                 "default) also moves a vertex onto every input point (paper §3, Lemma 1)")
-    ->check(CLI::IsMember({ "quadtree", "points" }));
+                 "default) also moves a vertex onto every point of a point cloud, or every "
+                 "isolated point of a domain (paper §3, Lemma 1); 'clearance' (domains only) "
+                 "keeps the core mesh clear of the boundary (paper §4.3, Fig. 3(c))")
+    ->check(CLI::IsMember({ "quadtree", "points", "clearance" }));
   app.add_option("--max-size", opt.max_size, "largest cell side (0: no bound)")
     ->check(CLI::NonNegativeNumber);
   app.add_option("--min-size", opt.min_size,

@@ -216,3 +216,33 @@ TEST(Insert_points, quadtree_stage_leaves_points_off_the_vertices)
 }
 
 } // namespace qm2_test_points
+
+namespace qm2_test_points {
+
+// Points inside a domain: only the isolated points are anchored (the boundary's vertices are
+// the buffer layers' business), and they stay vertices through the clearance.
+TEST(Insert_points, isolated_points_of_a_domain_survive_the_clearance)
+{
+  Domain d;
+  d.points = { K::Point_2(0, 0), K::Point_2(4, 0), K::Point_2(4, 4), K::Point_2(0, 4),
+               K::Point_2(1.3, 1.7), K::Point_2(2.71828, 3.14159), K::Point_2(1.0 / 3, 3.5) };
+  d.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 } };
+  Mesher mesher(d);
+  Mesh mesh = mesher.run(QM::Stage::CLEARANCE);
+  ASSERT_EQ(mesher.anchored_points().size(), 3u);
+  ASSERT_EQ(mesher.point_vertices().size(), 3u);
+  for(std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(mesh.points[mesher.point_vertices()[i]], d.points[4 + i]);
+    for(std::size_t q = 0; q < mesh.quads.size(); ++q)
+      for(int c = 0; c < 4; ++c)
+        if(mesh.quads[q][c] == mesher.point_vertices()[i]) {
+          EXPECT_LE(aspect(mesh, q), 1.5);
+        }
+  }
+  EXPECT_TRUE(qm2_checks::is_conforming(mesh));
+  auto range = qm2_checks::angle_range(mesh);
+  EXPECT_GE(range.min, 45 - 1e-9);
+  EXPECT_LE(range.max, 135 + 1e-9);
+}
+
+} // namespace qm2_test_points

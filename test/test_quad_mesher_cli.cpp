@@ -151,6 +151,26 @@ TEST(quad_mesher_cli, usage_errors)
   EXPECT_NE(run(lake + " -o " + m.string() + " --max-size -1").status, 0);
 }
 
+TEST(quad_mesher_cli, clearance_keeps_a_valid_core_mesh_inside_the_domain)
+{
+  auto msh = scratch("clear.msh"), json = scratch("clear.json");
+  Cli_run r = run(lake + " --stop-after clearance --kernel " + kernel_name + " -o " + msh.string() + " --report " + json.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto report = nlohmann::json::parse(slurp(json));
+  EXPECT_TRUE(report["validity"]["valid"].get<bool>());
+  EXPECT_GE(report["min_angle"].get<double>(), 45 - 1e-9);
+  EXPECT_LE(report["max_angle"].get<double>(), 135 + 1e-9);
+  const auto& removed = report["clearance_removed"];
+  EXPECT_GT(removed["outside"].get<int>(), 0);
+  EXPECT_GT(removed["crossing_boundary"].get<int>(), 0);
+  EXPECT_GT(removed["near_boundary"].get<int>(), 0);
+  EXPECT_GE(report["validity"]["boundary_loops"].get<int>(), 7); // the shore and 6 islands at least
+  // a point cloud has no boundary to clear
+  auto xy = scratch("clear.xy");
+  std::ofstream(xy) << "0 0\n1 1\n";
+  EXPECT_EQ(run(xy.string() + " --stop-after clearance -o " + msh.string()).status, 1);
+}
+
 TEST(quad_mesher_cli, point_cloud_points_become_vertices)
 {
   auto xy = scratch("cloud.xy"), msh = scratch("cloud.msh"), json = scratch("cloud.json");

@@ -47,6 +47,8 @@ struct Archetype_traits
   typedef K::Construct_bbox_2 Construct_bbox_2;
   typedef K::Construct_segment_2 Construct_segment_2;
   typedef K::Do_intersect_2 Do_intersect_2;
+  // for the buffer-zone clearance
+  typedef K::Compare_squared_distance_2 Compare_squared_distance_2;
   typedef K::Construct_point_2 Construct_point_2;
   typedef K::Construct_iso_rectangle_2 Construct_iso_rectangle_2;
 
@@ -70,6 +72,10 @@ struct Archetype_traits
   Construct_bbox_2 construct_bbox_2_object() const { return K().construct_bbox_2_object(); }
   Construct_segment_2 construct_segment_2_object() const { return K().construct_segment_2_object(); }
   Do_intersect_2 do_intersect_2_object() const { return K().do_intersect_2_object(); }
+  Compare_squared_distance_2 compare_squared_distance_2_object() const
+  {
+    return K().compare_squared_distance_2_object();
+  }
   Construct_point_2 construct_point_2_object() const { return K().construct_point_2_object(); }
   Construct_iso_rectangle_2 construct_iso_rectangle_2_object() const
   {
@@ -91,7 +97,7 @@ TEST(QuadMesherTraits_2, archetype_is_enough_for_the_mesher)
   square.points = { K::Point_2(0, 0), K::Point_2(1, 0), K::Point_2(1, 1), K::Point_2(0, 1) };
   square.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 } };
   CGAL::Quad_mesher_2::Quadtree_mesher_2<Archetype_traits> domain_mesher(square, criteria);
-  EXPECT_TRUE(qm2_checks::is_conforming(domain_mesher.run(CGAL::Quad_mesher_2::Stage::QUADTREE)));
+  EXPECT_TRUE(qm2_checks::is_conforming(domain_mesher.run(CGAL::Quad_mesher_2::Stage::CLEARANCE)));
   EXPECT_EQ(domain_mesher.loops().loops.size(), 1u);
 }
 

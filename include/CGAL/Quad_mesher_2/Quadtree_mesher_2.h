@@ -13,6 +13,7 @@
 #include <CGAL/Quad_mesher_2/Quad_mesh_2.h>
 #include <CGAL/Quad_mesher_2/internal/apply_templates.h>
 #include <CGAL/Quad_mesher_2/internal/boundary_sizing.h>
+#include <CGAL/Quad_mesher_2/internal/buffer_zone_clearance.h>
 #include <CGAL/Quad_mesher_2/internal/insert_points.h>
 #include <CGAL/Quad_mesher_2/internal/nearest_neighbor_distances.h>
 
@@ -34,7 +35,10 @@ namespace Quad_mesher_2 {
 enum class Stage
 {
   QUADTREE, ///< strongly balanced adaptive quadtree with 2-refinement templates (paper Fig. 3(b))
-  POINTS    ///< every input point moved onto a mesh vertex (paper §3, Lemma 1)
+  POINTS,   ///< every input point of a point cloud, or isolated point of a domain, moved onto a
+            ///< mesh vertex (paper §3, Lemma 1)
+  CLEARANCE ///< domains only: quads outside, crossing or too near the boundary removed, leaving
+            ///< the core mesh and an empty buffer zone (paper §4.3, Fig. 3(c))
 };
 
 /// \ingroup PkgQuadMesher2Ref
@@ -44,6 +48,7 @@ inline const char* stage_name(Stage s)
   switch(s) {
   case Stage::QUADTREE: return "quadtree";
   case Stage::POINTS: return "points";
+  case Stage::CLEARANCE: return "clearance";
   }
   return "?";
 }
@@ -80,6 +85,8 @@ public:
       throw Meshing_error("the input has no points");
     check_finite();
     merge_duplicate_points();
+    if(!m_domain.is_point_cloud())
+      m_loops = extract_loops(m_domain, m_traits); // validates the boundary first
     m_tree = std::make_unique<Quadtree>(bounding_box(), m_criteria.max_depth(), m_traits);
     m_tree->set_max_leaves(m_criteria.max_cells());
     compute_point_spacing();
@@ -93,10 +100,29 @@ public:
     record("refine", start);
     start = std::chrono::steady_clock::now();
     if(m_criteria.points_as_vertices()) {
-      std::vector<int> levels(m_points.size());
-      for(std::size_t i = 0; i < m_points.size(); ++i)
-        levels[i] = point_level(i, 1);
-      m_anchors = internal::anchor_points(*m_tree, m_points, levels, m_input_index);
+      // a point cloud's points, or a domain's isolated points: boundary vertices are for the
+      // buffer layers
+      std::vector<std::size_t> chosen;
+      if(m_domain.is_point_cloud()) {
+        for(std::size_t i = 0; i < m_points.size(); ++i)
+          chosen.push_back(i);
+      } else {
+        std::vector<std::size_t> unique_of(m_domain.points.size(), std::size_t(-1));
+        for(std::size_t i = 0; i < m_points.size(); ++i)
+          unique_of[m_input_index[i]] = i;
+        for(std::size_t v : m_loops.isolated_points)
+          if(unique_of[v] != std::size_t(-1))
+            chosen.push_back(unique_of[v]);
+      }
+      std::vector<int> levels;
+      std::vector<std::size_t> names;
+      m_anchored_points.clear();
+      for(std::size_t i : chosen) {
+        levels.push_back(point_level(i, 1));
+        names.push_back(m_input_index[i]);
+        m_anchored_points.push_back(m_points[i]);
+      }
+      m_anchors = internal::anchor_points(*m_tree, m_anchored_points, levels, names);
     } else {
       m_tree->balance();
     }
@@ -109,7 +135,7 @@ public:
   {
     CGAL_precondition(m_tree != nullptr);
     auto start = std::chrono::steady_clock::now();
-    Mesh mesh = internal::templated_mesh(*m_tree, nullptr, &m_vertex_keys);
+    Mesh mesh = internal::templated_mesh(*m_tree, &m_quad_cells, &m_vertex_keys);
     record("templates", start);
     return mesh;
   }
@@ -122,8 +148,35 @@ public:
   {
     CGAL_precondition(m_tree != nullptr && m_criteria.points_as_vertices());
     auto start = std::chrono::steady_clock::now();
-    m_point_vertices = internal::move_anchors(*m_tree, mesh, m_vertex_keys, m_anchors, m_points);
+    m_point_vertices = internal::move_anchors(*m_tree, mesh, m_vertex_keys, m_anchors, m_anchored_points);
     record("points", start);
+  }
+
+  /// Stage 3 (domains only, paper §4.3): removes the quads of `mesh`, the result of
+  /// `core_mesh()` (and `insert_points()`), that lie outside the domain, cross its boundary
+  /// or have a vertex within half their size of it, then single elements and pinches, so that
+  /// the rest, the core mesh, has simple closed boundary loops.
+  void clear_buffer_zone(Mesh& mesh)
+  {
+    CGAL_precondition(m_tree != nullptr);
+    if(m_domain.is_point_cloud())
+      throw Meshing_error("the clearance stage needs a domain bounded by segments, not a point cloud");
+    auto start = std::chrono::steady_clock::now();
+    std::vector<double> quad_size(m_quad_cells.size());
+    for(std::size_t q = 0; q < quad_size.size(); ++q)
+      quad_size[q] = m_tree->cell_side(m_quad_cells[q].level);
+    auto result = internal::clear_buffer_zone(mesh, quad_size, m_domain, m_loops, m_traits);
+    m_removed = { result.removed_outside, result.removed_intersecting, result.removed_near,
+                  result.removed_single };
+    // the point vertices survive: isolated points lie farther inside than any removed quad
+    std::vector<std::size_t> new_index(mesh.points.size(), std::size_t(-1));
+    for(std::size_t q = 0; q < result.core.quads.size(); ++q)
+      for(int c = 0; c < 4; ++c)
+        new_index[mesh.quads[result.core_to_input_quad[q]][c]] = result.core.quads[q][c];
+    for(std::size_t& v : m_point_vertices)
+      v = new_index[v];
+    mesh = std::move(result.core);
+    record("clearance", start);
   }
 
   /// Runs the stages up to `last` and returns the mesh.
@@ -133,19 +186,25 @@ public:
     Mesh mesh = core_mesh();
     if(last >= Stage::POINTS && m_criteria.points_as_vertices())
       insert_points(mesh);
+    if(last >= Stage::CLEARANCE)
+      clear_buffer_zone(mesh);
     return mesh;
   }
 
+  /// quads removed by the clearance: outside, crossing the boundary, near it, single
+  const std::array<std::size_t, 4>& removed_by_clearance() const { return m_removed; }
+  /// the points made vertices: a point cloud's, or a domain's isolated points
+  const std::vector<Point_2>& anchored_points() const { return m_anchored_points; }
+
   /// the input points without exact duplicates, in input order
   const std::vector<Point_2>& points() const { return m_points; }
-  /// the validated, oriented boundary loops (empty for a point cloud or when narrow regions
-  /// are not resolved)
+  /// the validated, oriented boundary loops (empty for a point cloud)
   const Domain_loops_2<GeomTraits>& loops() const { return m_loops; }
   /// for each point of `points()`, its index in the domain's points
   const std::vector<std::size_t>& input_indices() const { return m_input_index; }
   /// how many input points were exact duplicates of an earlier one (merged)
   std::size_t number_of_merged_points() const { return m_domain.points.size() - m_points.size(); }
-  /// for each point of `points()`, its vertex in the mesh (after `insert_points()`)
+  /// for each point of `anchored_points()`, its vertex in the mesh (after `insert_points()`)
   const std::vector<std::size_t>& point_vertices() const { return m_point_vertices; }
   /// for each point of `points()`, the lattice vertex it moves (after `build_quadtree()`)
   const std::vector<internal::Point_anchor>& anchors() const { return m_anchors; }
@@ -301,10 +360,9 @@ private:
     }
   }
 
-  // Paper §4.2: more than two cells across every narrow region. Validates the loops too.
+  // Paper §4.2: more than two cells across every narrow region.
   void refine_narrow_regions()
   {
-    m_loops = extract_loops(m_domain, m_traits);
     auto make_point = m_traits.construct_point_2_object();
     for(const internal::Size_sample& s : internal::narrow_region_samples(m_domain, m_loops, m_traits)) {
       const int level = level_for_size(s.size);
@@ -354,6 +412,9 @@ private:
   Domain_loops_2<GeomTraits> m_loops;           // of a domain with segments
   std::vector<internal::Point_anchor> m_anchors;
   std::vector<std::uint64_t> m_vertex_keys;     // of the core mesh's vertices
+  std::vector<Cell_key> m_quad_cells;           // the leaf of each core-mesh quad
+  std::vector<Point_2> m_anchored_points;       // the points insert_points() makes vertices
+  std::array<std::size_t, 4> m_removed{ { 0, 0, 0, 0 } };
   std::vector<std::size_t> m_point_vertices;
   Timings m_timings;
 };
