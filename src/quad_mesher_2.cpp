@@ -8,6 +8,7 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <CGAL/Quad_mesher_2/Curve_decomposition_2.h>
 #include <CGAL/Quad_mesher_2/IO/read_domain.h>
 #include <CGAL/Quad_mesher_2/IO/write_quad_mesh.h>
 #include <CGAL/Quad_mesher_2/Mesh_quality_2.h>
@@ -38,6 +39,9 @@ struct Options
   double min_size = 0;
   int max_depth = QM::Mesh_criteria_2<CGAL::Epick>::default_max_depth;
   std::size_t max_cells = QM::Mesh_criteria_2<CGAL::Epick>().max_cells();
+  std::string curves = "polygon";
+  double max_turning_angle = 5;
+  double chord_error = 0;
   bool verbose = false;
 };
 
@@ -89,6 +93,20 @@ int run(const Options& opt)
               << domain.segments.size() << " segments, " << domain.holes.size() << " holes in "
               << seconds["read"].get<double>() << " s\n";
 
+  if(opt.curves == "spline") {
+    // paper §4.1: each loop is a closed cubic spline through its points
+    t = Clock::now();
+    QM::Curve_decomposition_options curve_options;
+    curve_options.max_turning_angle_deg = opt.max_turning_angle;
+    curve_options.max_chord_error = opt.chord_error;
+    const std::size_t before = domain.points.size();
+    domain = QM::decompose_domain_curves(domain, curve_options);
+    seconds["curves"] = seconds_since(t);
+    if(opt.verbose)
+      std::cerr << "curves: " << before << " spline points -> " << domain.points.size()
+                << " polygon vertices in " << seconds["curves"].get<double>() << " s\n";
+  }
+
   QM::Mesh_criteria_2<K> criteria(opt.max_size, opt.min_size, opt.max_depth);
   criteria.set_max_cells(opt.max_cells);
   // the quadtree stage alone does not refine for point insertion
@@ -137,6 +155,7 @@ int run(const Options& opt)
                       { "holes", domain.holes.size() } };
   report["input"]["merged_duplicate_points"] = mesher.number_of_merged_points();
   report["kernel"] = opt.kernel;
+  report["curves"] = opt.curves;
   report["stop_after"] = opt.stop_after;
   report["quads"] = quality.number_of_quads;
   report["vertices"] = quality.number_of_vertices;
@@ -222,6 +241,17 @@ int main(int argc, char** argv)
                  "isolated point of a domain (paper §3, Lemma 1); 'clearance' (domains only) "
                  "keeps the core mesh clear of the boundary (paper §4.3, Fig. 3(c))")
     ->check(CLI::IsMember({ "quadtree", "points", "clearance" }));
+  app.add_option("--curves", opt.curves,
+                 "how the input's loops are read: 'polygon' (as given) or 'spline' (closed cubic "
+                 "splines through their points, decomposed into segments, paper §4.1)")
+    ->check(CLI::IsMember({ "polygon", "spline" }));
+  app.add_option("--max-turning-angle", opt.max_turning_angle,
+                 "with --curves spline: largest turn between neighbouring segments, degrees")
+    ->check(CLI::Range(1e-3, 90.0));
+  app.add_option("--chord-error", opt.chord_error,
+                 "with --curves spline: largest distance between a segment and its curve (0: 1e-3 "
+                 "of the bounding-box diagonal)")
+    ->check(CLI::NonNegativeNumber);
   app.add_option("--max-size", opt.max_size, "largest cell side (0: no bound)")
     ->check(CLI::NonNegativeNumber);
   app.add_option("--min-size", opt.min_size,

@@ -171,6 +171,28 @@ TEST(quad_mesher_cli, clearance_keeps_a_valid_core_mesh_inside_the_domain)
   EXPECT_EQ(run(xy.string() + " --stop-after clearance -o " + msh.string()).status, 1);
 }
 
+TEST(quad_mesher_cli, spline_curves_are_decomposed)
+{
+  auto poly = scratch("blob.poly"), msh = scratch("blob.msh"), json = scratch("blob.json");
+  {
+    std::ofstream out(poly);
+    out << "8 2 0 0\n";
+    for(int k = 0; k < 8; ++k)
+      out << k + 1 << " " << std::cos(k * M_PI / 4) * (k % 2 ? 1.0 : 1.4) << " " << std::sin(k * M_PI / 4) << "\n";
+    out << "8 0\n";
+    for(int k = 0; k < 8; ++k)
+      out << k + 1 << " " << k + 1 << " " << (k + 1) % 8 + 1 << "\n";
+    out << "0\n";
+  }
+  Cli_run r = run(poly.string() + " --curves spline --stop-after clearance -o " + msh.string() + " --report " + json.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto report = nlohmann::json::parse(slurp(json));
+  EXPECT_EQ(report["curves"], "spline");
+  EXPECT_TRUE(report["seconds"].contains("curves"));
+  EXPECT_TRUE(report["validity"]["valid"].get<bool>());
+  EXPECT_NE(run(poly.string() + " --curves bezier -o " + msh.string()).status, 0);
+}
+
 TEST(quad_mesher_cli, point_cloud_points_become_vertices)
 {
   auto xy = scratch("cloud.xy"), msh = scratch("cloud.msh"), json = scratch("cloud.json");
