@@ -4,13 +4,28 @@
 
 The concept `QuadMesherTraits_2` describes the geometric types and function objects that
 `CGAL::Quad_mesher_2::Balanced_quadtree_2`, `CGAL::Quad_mesher_2::Quadtree_mesher_2`,
-`CGAL::Quad_mesher_2::Mesh_criteria_2` and `CGAL::Quad_mesher_2::Domain_2` use. The list is
-exactly what these classes call on the traits: the point coordinates, the extremes of an
-iso-rectangle, four comparisons (`Less_x_2` and `Less_y_2` for the bounding box of the
-input, `Less_xy_2` and `Equal_2` to merge duplicate points) and two constructions (lattice
-points, the input's widened bounding box and the moved vertices of the points stage; cell
-rectangles). A test (`test/test_traits_and_headers.cpp`)
-meshes with an archetype that provides nothing else.
+`CGAL::Quad_mesher_2::Mesh_criteria_2`, `CGAL::Quad_mesher_2::Domain_2`,
+`CGAL::Quad_mesher_2::extract_loops()` and `CGAL::Quad_mesher_2::domain_area()`, the curve
+decomposition (`CGAL::Quad_mesher_2::decompose_closed_spline()`,
+`CGAL::Quad_mesher_2::decompose_domain_curves()`), the narrow-region sizing and the
+buffer-zone clearance use. The list is exactly what the package's headers call on the
+traits (every `..._object()` in `include/`):
+- the quadtree and the points stage: the point coordinates, the extremes of an
+  iso-rectangle, `Less_x_2` and `Less_y_2` (bounding box of the input), `Less_xy_2` and
+  `Equal_2` (merging duplicate points), `Construct_point_2` (lattice points, the widened
+  bounding box, the moved vertices, the narrow-region samples) and
+  `Construct_iso_rectangle_2` (cells);
+- the boundary loops (`Domain_loops_2.h`, also run by the curve decomposition):
+  `Orientation_2`, `Collinear_are_ordered_along_line_2`, `Construct_segment_2` and
+  `Do_intersect_2` (crossing, touching and overlapping segments), `Compare_x_2`
+  (point in loop), `Construct_bbox_2` (box filters) and `Compute_area_2` (`domain_area()`);
+- the buffer-zone clearance (`internal/buffer_zone_clearance.h`): `Orientation_2`,
+  `Compare_x_2`, `Construct_segment_2`, `Construct_bbox_2` and
+  `Compare_squared_distance_2` (criterion 3).
+
+The narrow-region sizing (`internal/boundary_sizing.h`) needs only the coordinates and
+`Construct_point_2`: it works in `double`. A test (`test/test_traits_and_headers.cpp`)
+compiles and runs the mesher with an archetype that provides nothing else.
 
 The number type `FT` must be constructible from `double`, comparable with `operator<`,
 support `+`, `-` and `*` (the points stage moves vertices by \f$ x + f (p_x - w_x)\f$), and be
@@ -28,7 +43,8 @@ section "Exact arithmetic").
 <b>Not covered by this concept.</b> Functions that take a point type rather than a traits
 class (`CGAL::Quad_mesher_2::compute_quality()`, the writers `write_MSH()`, `write_VTU()`,
 `write_OFF()`, `write_SVG()`) call `p.x()` and `p.y()` on the point directly. The readers in
-`CGAL::Quad_mesher_2::IO` construct points with `Construct_point_2`; `read_WKT()` also calls
+`CGAL::Quad_mesher_2::IO` construct points with `Construct_point_2`;
+`CGAL::Quad_mesher_2::loop_polygon_2()` returns a `CGAL::Polygon_2<GeomTraits>`; `read_WKT()` also calls
 `CGAL::is_simple_2()`, `CGAL::bounded_side_2()`, `CGAL::orientation_2()` with the traits (so
 its kernel must be a model of `PolygonTraits_2` as well) and `Point_2::bbox()`.
 
@@ -57,6 +73,11 @@ The iso-oriented rectangle type: the bounding box of the input and the geometry 
 quadtree cell.
 */
 typedef unspecified_type Iso_rectangle_2;
+
+/*!
+The segment type: the boundary segments of a domain.
+*/
+typedef unspecified_type Segment_2;
 
 /// @}
 
@@ -140,6 +161,54 @@ A function object providing
 */
 typedef unspecified_type Construct_iso_rectangle_2;
 
+/*!
+A predicate providing `Comparison_result operator()(const Point_2& p, const Point_2& q)`,
+which compares the \f$ x\f$-coordinates of `p` and `q`.
+*/
+typedef unspecified_type Compare_x_2;
+
+/*!
+A predicate providing `Orientation operator()(const Point_2& p, const Point_2& q, const Point_2& r)`,
+which returns `LEFT_TURN`, `RIGHT_TURN` or `COLLINEAR`.
+*/
+typedef unspecified_type Orientation_2;
+
+/*!
+A predicate providing `bool operator()(const Point_2& p, const Point_2& q, const Point_2& r)`,
+which, for collinear points, returns `true` iff `q` lies between `p` and `r` (or equals one
+of them).
+*/
+typedef unspecified_type Collinear_are_ordered_along_line_2;
+
+/*!
+A function object providing `FT operator()(const Point_2& p, const Point_2& q, const Point_2& r)`,
+which returns the signed area of the triangle `pqr`.
+*/
+typedef unspecified_type Compute_area_2;
+
+/*!
+A function object providing `CGAL::Bbox_2 operator()(const Point_2& p)`, a box of `double`
+values that contains `p` (used only as a conservative filter).
+*/
+typedef unspecified_type Construct_bbox_2;
+
+/*!
+A function object providing `Segment_2 operator()(const Point_2& p, const Point_2& q)`.
+*/
+typedef unspecified_type Construct_segment_2;
+
+/*!
+A predicate providing `bool operator()(const Segment_2& s, const Segment_2& t)`, which
+returns `true` iff the closed segments `s` and `t` meet.
+*/
+typedef unspecified_type Do_intersect_2;
+
+/*!
+A predicate providing `Comparison_result operator()(const Point_2& p, const Segment_2& s, const FT& d2)`,
+which compares the squared distance from `p` to `s` with `d2`.
+*/
+typedef unspecified_type Compare_squared_distance_2;
+
 /// @}
 
 /// \name Access to Function Objects
@@ -204,6 +273,46 @@ Construct_point_2 construct_point_2_object() const;
 
 */
 Construct_iso_rectangle_2 construct_iso_rectangle_2_object() const;
+
+/*!
+
+*/
+Compare_x_2 compare_x_2_object() const;
+
+/*!
+
+*/
+Orientation_2 orientation_2_object() const;
+
+/*!
+
+*/
+Collinear_are_ordered_along_line_2 collinear_are_ordered_along_line_2_object() const;
+
+/*!
+
+*/
+Compute_area_2 compute_area_2_object() const;
+
+/*!
+
+*/
+Construct_bbox_2 construct_bbox_2_object() const;
+
+/*!
+
+*/
+Construct_segment_2 construct_segment_2_object() const;
+
+/*!
+
+*/
+Do_intersect_2 do_intersect_2_object() const;
+
+/*!
+
+*/
+Compare_squared_distance_2 compare_squared_distance_2_object() const;
 
 /// @}
 
