@@ -40,6 +40,7 @@ struct Options
   int max_depth = QM::Mesh_criteria_2<CGAL::Epick>::default_max_depth;
   std::size_t max_cells = QM::Mesh_criteria_2<CGAL::Epick>().max_cells();
   std::string curves = "polygon";
+  bool merge_duplicates = false;
   double max_turning_angle = 5;
   double chord_error = 0;
   bool verbose = false;
@@ -64,7 +65,8 @@ bool same_file(const std::string& a, const std::string& b)
   std::error_code ec;
   if(std::filesystem::exists(a, ec) && std::filesystem::exists(b, ec))
     return std::filesystem::equivalent(a, b, ec);
-  return std::filesystem::weakly_canonical(a, ec) == std::filesystem::weakly_canonical(b, ec);
+  return std::filesystem::weakly_canonical(std::filesystem::absolute(a, ec), ec)
+         == std::filesystem::weakly_canonical(std::filesystem::absolute(b, ec), ec);
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start)
@@ -83,7 +85,9 @@ int run(const Options& opt)
   QM::Domain_2<K> domain;
   std::string error;
   auto t = Clock::now();
-  if(!QM::IO::read_domain(opt.input, domain, &error)) {
+  if(!QM::IO::read_domain(opt.input, domain, &error,
+                          opt.merge_duplicates ? QM::IO::Duplicate_points::KEEP
+                                               : QM::IO::Duplicate_points::REJECT)) {
     std::cerr << "quad-mesher: " << error << "\n";
     return 1;
   }
@@ -241,6 +245,9 @@ int main(int argc, char** argv)
                  "isolated point of a domain (paper §3, Lemma 1); 'clearance' (domains only) "
                  "keeps the core mesh clear of the boundary (paper §4.3, Fig. 3(c))")
     ->check(CLI::IsMember({ "quadtree", "points", "clearance" }));
+  app.add_flag("--merge-duplicates", opt.merge_duplicates,
+               "in a point file (.node, x y), merge points given twice and report how many, "
+               "instead of stopping at the first with its line numbers");
   app.add_option("--curves", opt.curves,
                  "how the input's loops are read: 'polygon' (as given) or 'spline' (closed cubic "
                  "splines through their points, decomposed into segments, paper §4.1)")

@@ -126,6 +126,9 @@ TEST(quad_mesher_cli, never_overwrites_the_input_and_refuses_directories)
   const std::string before = slurp(copy);
   EXPECT_EQ(run(copy.string() + " -o " + m.string() + " --report " + copy.string()).status, 2);
   EXPECT_EQ(run(copy.string() + " -o " + m.string() + " -o " + m.string()).status, 2);
+  std::filesystem::remove(m);
+  const std::string dotted = (m.parent_path() / "." / m.filename()).string();
+  EXPECT_EQ(run(copy.string() + " -o " + m.string() + " -o " + dotted).status, 2); // not there yet
   EXPECT_EQ(run(copy.string() + " -o " + m.string() + " --report " + m.string()).status, 2);
   EXPECT_EQ(slurp(copy), before);
   std::filesystem::create_directories(dir);
@@ -223,6 +226,21 @@ TEST(quad_mesher_cli, point_cloud_points_become_vertices)
     found += mesh.find(node.str()) != std::string::npos;
   }
   EXPECT_EQ(found, 200);
+}
+
+TEST(quad_mesher_cli, duplicate_points_are_named_or_merged_on_request)
+{
+  auto xy = scratch("dups.xy"), msh = scratch("dups.msh"), json = scratch("dups.json");
+  std::ofstream(xy) << "0 0\n1 0.5\n0.25 0.75\n1 0.5\n0 0\n";
+  Cli_run r = run(xy.string() + " -o " + msh.string());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("dups.xy:4: duplicate point"), std::string::npos) << r.err;
+  r = run(xy.string() + " --merge-duplicates -o " + msh.string() + " --report " + json.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("merged 2 duplicate"), std::string::npos) << r.err;
+  auto report = nlohmann::json::parse(slurp(json));
+  EXPECT_EQ(report["input"]["merged_duplicate_points"].get<int>(), 2);
+  EXPECT_EQ(report["points_as_vertices"].get<int>(), 3);
 }
 
 TEST(quad_mesher_cli, help_lists_every_option_and_verbose_prints_stages)

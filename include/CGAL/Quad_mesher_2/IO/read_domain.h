@@ -37,14 +37,16 @@ inline std::string file_extension(const std::string& filename)
 /// (case-insensitive): `.poly` (`read_poly()`), `.node` (`read_node()`), `.xy`, `.txt`,
 /// `.pts`, `.dat` (`read_xy()`), `.wkt` (`read_WKT()`). Any other extension is an error
 /// (`FILE: unknown file extension ...`). Returns `false` on failure, with `out` empty and one
-/// message in `*error`. Never throws.
+/// message in `*error`. Never throws. `duplicates` applies to the point files (`.node`, `x y`);
+/// a `.poly` or WKT input always rejects duplicate points.
 template <class K>
-bool read_domain(const std::string& filename, Domain_2<K>& out, std::string* error = nullptr)
+bool read_domain(const std::string& filename, Domain_2<K>& out, std::string* error = nullptr,
+                 Duplicate_points duplicates = Duplicate_points::REJECT)
 {
   const std::string ext = internal::file_extension(filename);
   if(ext == ".poly") return read_poly(filename, out, error);
-  if(ext == ".node") return read_node(filename, out, error);
-  if(ext == ".xy" || ext == ".txt" || ext == ".pts" || ext == ".dat") return read_xy(filename, out, error);
+  if(ext == ".node") return read_node(filename, out, error, duplicates);
+  if(ext == ".xy" || ext == ".txt" || ext == ".pts" || ext == ".dat") return read_xy(filename, out, error, duplicates);
   if(ext == ".wkt") return read_WKT(filename, out, error);
   out = Domain_2<K>();
   internal::set_error(error, filename + ": unknown file extension " +

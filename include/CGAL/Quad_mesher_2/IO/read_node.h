@@ -29,6 +29,11 @@
 namespace CGAL {
 namespace Quad_mesher_2 {
 namespace IO {
+/// \ingroup PkgQuadMesher2IO
+/// What a point-file reader does with two points at exactly the same place: report the file
+/// and lines (the default), or keep both for the mesher, which merges and counts them.
+enum class Duplicate_points { REJECT, KEEP };
+
 namespace internal {
 
 // Shared machinery of the text readers (`read_node.h`, `read_poly.h`, `read_xy.h`,
@@ -418,7 +423,8 @@ void append_points(const std::vector<std::array<double, 2> >& xy, std::vector<ty
   for(const auto& p : xy) pts.push_back(cp(typename K::FT(p[0]), typename K::FT(p[1])));
 }
 
-inline bool read_node_text(Text_lines& r, Vertex_list& v, std::string& msg)
+inline bool read_node_text(Text_lines& r, Vertex_list& v, std::string& msg,
+                           Duplicate_points duplicates = Duplicate_points::REJECT)
 {
   long long count = 0;
   if(!read_vertex_section(r, v, count, msg)) return false;
@@ -428,18 +434,19 @@ inline bool read_node_text(Text_lines& r, Vertex_list& v, std::string& msg)
           std::to_string(count) + " vertices)";
     return false;
   }
-  return check_duplicate_vertices(v, msg);
+  return duplicates == Duplicate_points::KEEP || check_duplicate_vertices(v, msg);
 }
 
 template <class K>
-bool read_node_impl(std::string&& text, const std::string& source, Domain_2<K>& out, std::string* error)
+bool read_node_impl(std::string&& text, const std::string& source, Domain_2<K>& out, std::string* error,
+                    Duplicate_points duplicates)
 {
   out = Domain_2<K>();
   std::string msg;
   try {
     Text_lines r(std::move(text), source);
     Vertex_list v;
-    if(read_node_text(r, v, msg)) {
+    if(read_node_text(r, v, msg, duplicates)) {
       append_points<K>(v.xy, out.points);
       return true;
     }
@@ -465,22 +472,24 @@ bool read_node_impl(std::string&& text, const std::string& source, Domain_2<K>& 
 /// `SOURCE:LINE: problem`. Never throws.
 template <class K>
 bool read_node(std::istream& in, Domain_2<K>& out, std::string* error = nullptr,
-               const std::string& source_name = "<stream>")
+               const std::string& source_name = "<stream>",
+               Duplicate_points duplicates = Duplicate_points::REJECT)
 {
   std::string text, msg;
   if(!internal::slurp(in, text, source_name, msg)) { out = Domain_2<K>(); internal::set_error(error, msg); return false; }
-  return internal::read_node_impl(std::move(text), source_name, out, error);
+  return internal::read_node_impl(std::move(text), source_name, out, error, duplicates);
 }
 
 /// \ingroup PkgQuadMesher2IO
 /// Reads the Triangle `.node` file `filename`; see the stream overload. Messages are
 /// prefixed with `filename`.
 template <class K>
-bool read_node(const std::string& filename, Domain_2<K>& out, std::string* error = nullptr)
+bool read_node(const std::string& filename, Domain_2<K>& out, std::string* error = nullptr,
+               Duplicate_points duplicates = Duplicate_points::REJECT)
 {
   std::string text, msg;
   if(!internal::slurp_file(filename, text, msg)) { out = Domain_2<K>(); internal::set_error(error, msg); return false; }
-  return internal::read_node_impl(std::move(text), filename, out, error);
+  return internal::read_node_impl(std::move(text), filename, out, error, duplicates);
 }
 
 } // namespace IO

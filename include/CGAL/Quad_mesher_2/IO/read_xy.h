@@ -21,7 +21,8 @@ namespace IO {
 namespace internal {
 
 template <class K>
-bool read_xy_impl(std::string&& text, const std::string& source, Domain_2<K>& out, std::string* error)
+bool read_xy_impl(std::string&& text, const std::string& source, Domain_2<K>& out, std::string* error,
+                  Duplicate_points duplicates)
 {
   out = Domain_2<K>();
   std::string msg;
@@ -66,7 +67,7 @@ bool read_xy_impl(std::string&& text, const std::string& source, Domain_2<K>& ou
       msg = r.where(r.end_line()) + (r.is_empty() ? "empty file" : "no data (the file holds only comments or blank lines)");
       ok = false;
     }
-    if(ok) {
+    if(ok && duplicates == Duplicate_points::REJECT) {
       std::size_t a = 0, b = 0;
       if(find_duplicate_point(v.xy, a, b)) {
         msg = r.where(v.lines[b]) + "duplicate point: point " + std::to_string(b + 1) + " (line " + std::to_string(v.lines[b]) +
@@ -104,21 +105,23 @@ bool read_xy_impl(std::string&& text, const std::string& source, Domain_2<K>& ou
 /// (|v| > 1e150) coordinates, and duplicate points. Never throws.
 template <class K>
 bool read_xy(std::istream& in, Domain_2<K>& out, std::string* error = nullptr,
-             const std::string& source_name = "<stream>")
+             const std::string& source_name = "<stream>",
+             Duplicate_points duplicates = Duplicate_points::REJECT)
 {
   std::string text, msg;
   if(!internal::slurp(in, text, source_name, msg)) { out = Domain_2<K>(); internal::set_error(error, msg); return false; }
-  return internal::read_xy_impl(std::move(text), source_name, out, error);
+  return internal::read_xy_impl(std::move(text), source_name, out, error, duplicates);
 }
 
 /// \ingroup PkgQuadMesher2IO
 /// Reads the point file `filename`; see the stream overload.
 template <class K>
-bool read_xy(const std::string& filename, Domain_2<K>& out, std::string* error = nullptr)
+bool read_xy(const std::string& filename, Domain_2<K>& out, std::string* error = nullptr,
+             Duplicate_points duplicates = Duplicate_points::REJECT)
 {
   std::string text, msg;
   if(!internal::slurp_file(filename, text, msg)) { out = Domain_2<K>(); internal::set_error(error, msg); return false; }
-  return internal::read_xy_impl(std::move(text), filename, out, error);
+  return internal::read_xy_impl(std::move(text), filename, out, error, duplicates);
 }
 
 } // namespace IO
