@@ -47,6 +47,7 @@ struct Options
 };
 
 const std::vector<std::string> output_extensions = { ".msh", ".vtu", ".off", ".svg" };
+const QM::Stage all_stages[] = { QM::Stage::QUADTREE, QM::Stage::POINTS, QM::Stage::CLEARANCE };
 
 std::string extension_of(const std::string& path)
 {
@@ -58,6 +59,14 @@ std::string extension_of(const std::string& path)
   for(char& c : ext)
     c = char(std::tolower(static_cast<unsigned char>(c)));
   return ext;
+}
+
+std::vector<std::string> stage_names()
+{
+  std::vector<std::string> names;
+  for(QM::Stage s : all_stages)
+    names.push_back(QM::stage_name(s));
+  return names;
 }
 
 bool same_file(const std::string& a, const std::string& b)
@@ -111,14 +120,15 @@ int run(const Options& opt)
                 << " polygon vertices in " << seconds["curves"].get<double>() << " s\n";
   }
 
+  QM::Stage last = QM::Stage::POINTS;
+  for(QM::Stage s : all_stages)
+    if(opt.stop_after == QM::stage_name(s))
+      last = s;
   QM::Mesh_criteria_2<K> criteria(opt.max_size, opt.min_size, opt.max_depth);
   criteria.set_max_cells(opt.max_cells);
   // the quadtree stage alone does not refine for point insertion
-  criteria.set_points_as_vertices(opt.stop_after != "quadtree");
+  criteria.set_points_as_vertices(last != QM::Stage::QUADTREE);
   QM::Quadtree_mesher_2<K> mesher(domain, criteria);
-  const QM::Stage last = opt.stop_after == "quadtree" ? QM::Stage::QUADTREE
-                         : opt.stop_after == "points" ? QM::Stage::POINTS
-                                                      : QM::Stage::CLEARANCE;
   QM::Quad_mesh_2<typename K::Point_2> mesh = mesher.run(last);
   if(mesher.number_of_merged_points() > 0)
     std::cerr << "quad-mesher: " << opt.input << ": merged " << mesher.number_of_merged_points()
@@ -244,7 +254,7 @@ int main(int argc, char** argv)
                  "default) also moves a vertex onto every point of a point cloud, or every "
                  "isolated point of a domain (paper §3, Lemma 1); 'clearance' (domains only) "
                  "keeps the core mesh clear of the boundary (paper §4.3, Fig. 3(c))")
-    ->check(CLI::IsMember({ "quadtree", "points", "clearance" }));
+    ->check(CLI::IsMember(stage_names()));
   app.add_flag("--merge-duplicates", opt.merge_duplicates,
                "in a point file (.node, x y), merge points given twice and report how many, "
                "instead of stopping at the first with its line numbers");

@@ -310,7 +310,6 @@ public:
   void set_max_leaves(std::size_t n) { m_max_leaves = n; }
   std::size_t max_leaves() const { return m_max_leaves; }
 
-  std::size_t memory_bytes() const { return m_nodes.memory_bytes(); }
 
   /// deepest `max_depth` the key packing allows
   static constexpr int max_supported_depth = 24;

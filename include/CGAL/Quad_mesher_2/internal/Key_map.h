@@ -77,7 +77,6 @@ public:
         f(s.key, s.value);
   }
 
-  std::size_t memory_bytes() const { return m_slots.capacity() * sizeof(Slot); }
 
 private:
   static std::size_t hash(std::uint64_t x)
