@@ -501,22 +501,14 @@ bool wkt_to_domain(Wkt_data& data, const std::string& source, Domain_2<K>& out, 
 template <class K>
 bool read_WKT_impl(std::string&& text, const std::string& source, Domain_2<K>& out, std::string* error)
 {
-  out = Domain_2<K>();
-  std::string msg;
-  try {
+  return guarded_read(source, out, error, [&](std::string& msg) {
     Wkt_lexer lex(text, source);
     Wkt_data data;
     Wkt_parser parser(lex, data, msg);
     if(text.empty()) msg = source + ":1: empty file";
     else if(parser.parse() && wkt_to_domain(data, source, out, msg)) return true;
-  } catch(const std::exception& e) {
-    msg = source + ": " + e.what();
-  } catch(...) {
-    msg = source + ": unknown error";
-  }
-  out = Domain_2<K>();
-  set_error(error, msg);
-  return false;
+    return false;
+  });
 }
 
 } // namespace internal

@@ -173,6 +173,26 @@ inline void set_error(std::string* error, const std::string& msg)
   if(error) *error = msg;
 }
 
+// The frame every reader shares: `out` emptied, `parse(msg)` run, any exception turned into a
+// message, and on failure `out` left empty and the one message reported.
+template <class K, class Parse>
+bool guarded_read(const std::string& source, Domain_2<K>& out, std::string* error, Parse parse)
+{
+  out = Domain_2<K>();
+  std::string msg;
+  try {
+    if(parse(msg))
+      return true;
+  } catch(const std::exception& e) {
+    msg = source + ": " + e.what();
+  } catch(...) {
+    msg = source + ": unknown error";
+  }
+  out = Domain_2<K>();
+  set_error(error, msg);
+  return false;
+}
+
 /// Reads a whole stream into memory. False (and a message) on a stream error.
 inline bool slurp(std::istream& in, std::string& text, const std::string& source, std::string& msg)
 {
@@ -441,23 +461,15 @@ template <class K>
 bool read_node_impl(std::string&& text, const std::string& source, Domain_2<K>& out, std::string* error,
                     Duplicate_points duplicates)
 {
-  out = Domain_2<K>();
-  std::string msg;
-  try {
+  return guarded_read(source, out, error, [&](std::string& msg) {
     Text_lines r(std::move(text), source);
     Vertex_list v;
     if(read_node_text(r, v, msg, duplicates)) {
       append_points<K>(v.xy, out.points);
       return true;
     }
-  } catch(const std::exception& e) {
-    msg = source + ": " + e.what();
-  } catch(...) {
-    msg = source + ": unknown error";
-  }
-  out = Domain_2<K>();
-  set_error(error, msg);
-  return false;
+    return false;
+  });
 }
 
 } // namespace internal

@@ -171,19 +171,11 @@ template <class K>
 bool read_poly_impl(std::string&& text, const std::string& source, const std::string& node_file,
                     Domain_2<K>& out, std::string* error)
 {
-  out = Domain_2<K>();
-  std::string msg;
-  try {
+  return guarded_read(source, out, error, [&](std::string& msg) {
     Text_lines r(std::move(text), source);
     if(read_poly_text(r, node_file, out, msg)) return true;
-  } catch(const std::exception& e) {
-    msg = source + ": " + e.what();
-  } catch(...) {
-    msg = source + ": unknown error";
-  }
-  out = Domain_2<K>();
-  set_error(error, msg);
-  return false;
+    return false;
+  });
 }
 
 /// `dir/name.poly` -> `dir/name.node` (the extension is replaced, or `.node` appended).

@@ -24,9 +24,7 @@ template <class K>
 bool read_xy_impl(std::string&& text, const std::string& source, Domain_2<K>& out, std::string* error,
                   Duplicate_points duplicates)
 {
-  out = Domain_2<K>();
-  std::string msg;
-  try {
+  return guarded_read(source, out, error, [&](std::string& msg) {
     Text_lines r(std::move(text), source);
     Vertex_list v;
     v.source = source;
@@ -80,14 +78,8 @@ bool read_xy_impl(std::string&& text, const std::string& source, Domain_2<K>& ou
       append_points<K>(v.xy, out.points);
       return true;
     }
-  } catch(const std::exception& e) {
-    msg = source + ": " + e.what();
-  } catch(...) {
-    msg = source + ": unknown error";
-  }
-  out = Domain_2<K>();
-  set_error(error, msg);
-  return false;
+    return false;
+  });
 }
 
 } // namespace internal
