@@ -49,18 +49,6 @@ struct Options
 const std::vector<std::string> output_extensions = { ".msh", ".vtu", ".off", ".svg" };
 const QM::Stage all_stages[] = { QM::Stage::QUADTREE, QM::Stage::POINTS, QM::Stage::CLEARANCE };
 
-std::string extension_of(const std::string& path)
-{
-  std::size_t dot = path.find_last_of('.');
-  std::size_t slash = path.find_last_of('/');
-  if(dot == std::string::npos || (slash != std::string::npos && dot < slash))
-    return "";
-  std::string ext = path.substr(dot);
-  for(char& c : ext)
-    c = char(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
-
 std::vector<std::string> stage_names()
 {
   std::vector<std::string> names;
@@ -150,7 +138,7 @@ int run(const Options& opt)
 
   t = Clock::now();
   for(const std::string& out : opt.outputs) {
-    const bool written = extension_of(out) == ".svg" ? QM::IO::write_SVG(out, mesh, segments)
+    const bool written = QM::IO::file_extension(out) == ".svg" ? QM::IO::write_SVG(out, mesh, segments)
                                                      : QM::IO::write_quad_mesh(out, mesh);
     if(!written) {
       std::cerr << "quad-mesher: cannot write " << out << "\n";
@@ -301,7 +289,7 @@ int main(int argc, char** argv)
       }
   }
   for(const std::string& out : opt.outputs) {
-    const std::string ext = extension_of(out);
+    const std::string ext = QM::IO::file_extension(out);
     if(std::find(output_extensions.begin(), output_extensions.end(), ext)
        == output_extensions.end()) {
       std::cerr << "quad-mesher: output '" << out

@@ -6,6 +6,7 @@
 #define CGAL_QUAD_MESHER_2_IO_READ_DOMAIN_H
 
 #include <CGAL/Quad_mesher_2/Domain_2.h>
+#include <CGAL/Quad_mesher_2/IO/file_extension.h>
 #include <CGAL/Quad_mesher_2/IO/read_WKT.h>
 #include <CGAL/Quad_mesher_2/IO/read_node.h>
 #include <CGAL/Quad_mesher_2/IO/read_poly.h>
@@ -17,20 +18,6 @@
 namespace CGAL {
 namespace Quad_mesher_2 {
 namespace IO {
-namespace internal {
-
-/// The lower-cased extension of `filename` with its dot (`".poly"`), or empty.
-inline std::string file_extension(const std::string& filename)
-{
-  const std::size_t slash = filename.find_last_of("/\\");
-  const std::size_t dot = filename.find_last_of('.');
-  if(dot == std::string::npos || (slash != std::string::npos && dot < slash)) return std::string();
-  std::string ext = filename.substr(dot);
-  for(char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
-
-} // namespace internal
 
 /// \ingroup PkgQuadMesher2IO
 /// Reads the domain in `filename` into `out`, choosing the reader by the extension
@@ -43,7 +30,7 @@ template <class K>
 bool read_domain(const std::string& filename, Domain_2<K>& out, std::string* error = nullptr,
                  Duplicate_points duplicates = Duplicate_points::REJECT)
 {
-  const std::string ext = internal::file_extension(filename);
+  const std::string ext = file_extension(filename);
   if(ext == ".poly") return read_poly(filename, out, error);
   if(ext == ".node") return read_node(filename, out, error, duplicates);
   if(ext == ".xy" || ext == ".txt" || ext == ".pts" || ext == ".dat") return read_xy(filename, out, error, duplicates);

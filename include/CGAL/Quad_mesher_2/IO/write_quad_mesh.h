@@ -5,6 +5,7 @@
 #ifndef CGAL_QUAD_MESHER_2_IO_WRITE_QUAD_MESH_H
 #define CGAL_QUAD_MESHER_2_IO_WRITE_QUAD_MESH_H
 
+#include <CGAL/Quad_mesher_2/IO/file_extension.h>
 #include <CGAL/Quad_mesher_2/IO/write_MSH.h>
 #include <CGAL/Quad_mesher_2/IO/write_OFF.h>
 #include <CGAL/Quad_mesher_2/IO/write_SVG.h>
@@ -17,22 +18,6 @@
 namespace CGAL {
 namespace Quad_mesher_2 {
 namespace IO {
-namespace internal {
-
-/// The extension of `filename` after its last dot, lower-cased ("" if none).
-inline std::string lower_case_extension(const std::string& filename)
-{
-  const std::string::size_type slash = filename.find_last_of("/\\");
-  const std::string::size_type dot = filename.find_last_of('.');
-  if(dot == std::string::npos || (slash != std::string::npos && dot < slash))
-    return std::string();
-  std::string ext = filename.substr(dot + 1);
-  for(char& c : ext)
-    c = char(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
-
-} // namespace internal
 
 /// \ingroup PkgQuadMesher2IO
 /// Writes `mesh` to `filename` in the format given by its extension (case-insensitive):
@@ -43,14 +28,14 @@ inline std::string lower_case_extension(const std::string& filename)
 template <class Point_2>
 bool write_quad_mesh(const std::string& filename, const Quad_mesh_2<Point_2>& mesh)
 {
-  const std::string ext = internal::lower_case_extension(filename);
-  if(ext == "msh")
+  const std::string ext = file_extension(filename);
+  if(ext == ".msh")
     return CGAL::Quad_mesher_2::IO::write_MSH(filename, mesh);
-  if(ext == "vtu")
+  if(ext == ".vtu")
     return CGAL::Quad_mesher_2::IO::write_VTU(filename, mesh);
-  if(ext == "off")
+  if(ext == ".off")
     return CGAL::Quad_mesher_2::IO::write_OFF(filename, mesh);
-  if(ext == "svg")
+  if(ext == ".svg")
     return CGAL::Quad_mesher_2::IO::write_SVG(filename, mesh);
   return false;
 }

@@ -8,6 +8,7 @@
 #include <CGAL/Quad_mesher_2/Domain_2.h>
 #include <CGAL/Quad_mesher_2/Domain_loops_2.h>
 
+#include <CGAL/Bbox_2.h>
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
@@ -56,22 +57,37 @@ public:
   explicit Boundary_gap_finder(std::vector<Segment> segments, std::vector<double> loop_lengths,
                                double detour = 2.0)
     : m_segments(std::move(segments)), m_loop_lengths(std::move(loop_lengths)), m_detour(detour),
-      m_order(m_segments.size()), m_boxes(m_segments.size())
-  {
-    for(std::size_t k = 0; k < m_order.size(); ++k)
-      m_order[k] = k;
-    build(0, m_order.size());
-  }
+      m_boxes(boxes(m_segments)), m_tree(m_boxes)
+  {}
+  Boundary_gap_finder(const Boundary_gap_finder&) = delete;
+  Boundary_gap_finder& operator=(const Boundary_gap_finder&) = delete;
 
   // The gap at point q lying on segment `on` at arc length `arc` of its loop: the distance to
   // the nearest boundary point that is not q's neighbour along the loop, and that point; or
   // infinity if there is none within `reach`.
   double gap(const P& q, std::size_t on, double arc, double reach, P& nearest) const
   {
-    double best = reach;
-    bool found = false;
-    search(0, m_order.size(), q, on, arc, best, found, nearest);
-    return found ? best : HUGE_VAL;
+    double best = HUGE_VAL;
+    const Segment& here = m_segments[on];
+    m_tree.query(Bbox_2(q[0] - reach, q[1] - reach, q[0] + reach, q[1] + reach), [&](std::size_t k) {
+      const Segment& s = m_segments[k];
+      if(k == on || adjacent(s, here))
+        return; // a corner's two sides are a wedge, not a narrow region
+      double t;
+      const P c = closest(s, q, t);
+      const double d = std::hypot(c[0] - q[0], c[1] - q[1]);
+      if(!(d > 0) || d > reach || d >= best)
+        return;
+      if(s.loop == here.loop) {
+        double along = std::abs(s.arc_a + t * s.length - arc);
+        along = (std::min)(along, m_loop_lengths[s.loop] - along);
+        if(along <= m_detour * d)
+          return; // a neighbour along the loop, not the other side of a gap
+      }
+      best = d;
+      nearest = c;
+    });
+    return best;
   }
 
   const std::vector<Segment>& segments() const { return m_segments; }
@@ -91,87 +107,21 @@ private:
     return { s.a[0] + t * dx, s.a[1] + t * dy };
   }
 
-  typedef std::array<double, 4> Box; // xmin, ymin, xmax, ymax
-
-  static double distance(const Box& b, const P& q)
+  static std::vector<Bbox_2> boxes(const std::vector<Segment>& segments)
   {
-    const double dx = (std::max)({ b[0] - q[0], 0.0, q[0] - b[2] });
-    const double dy = (std::max)({ b[1] - q[1], 0.0, q[1] - b[3] });
-    return std::hypot(dx, dy);
-  }
-
-  // A bounding-box tree over the segments, stored implicitly like a k-d tree: the node of
-  // range [b, e) keeps its box at m_boxes[(b + e) / 2].
-  void build(std::size_t b, std::size_t e)
-  {
-    if(b >= e)
-      return;
-    Box box{ { HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL } };
-    for(std::size_t k = b; k < e; ++k) {
-      const Segment& s = m_segments[m_order[k]];
-      box[0] = (std::min)({ box[0], s.a[0], s.b[0] });
-      box[1] = (std::min)({ box[1], s.a[1], s.b[1] });
-      box[2] = (std::max)({ box[2], s.a[0], s.b[0] });
-      box[3] = (std::max)({ box[3], s.a[1], s.b[1] });
-    }
-    const std::size_t m = b + (e - b) / 2;
-    m_boxes[m] = box;
-    if(e - b == 1)
-      return;
-    const int axis = box[2] - box[0] >= box[3] - box[1] ? 0 : 1;
-    std::nth_element(m_order.begin() + b, m_order.begin() + m, m_order.begin() + e,
-                     [&](std::size_t u, std::size_t v) {
-                       return m_segments[u].a[axis] + m_segments[u].b[axis]
-                              < m_segments[v].a[axis] + m_segments[v].b[axis];
-                     });
-    build(b, m);
-    build(m + 1, e);
-  }
-
-  void search(std::size_t b, std::size_t e, const P& q, std::size_t on, double arc, double& best,
-              bool& found, P& nearest) const
-  {
-    if(b >= e)
-      return;
-    const std::size_t m = b + (e - b) / 2;
-    if(distance(m_boxes[m], q) >= best)
-      return;
-    const std::size_t k = m_order[m];
-    const Segment& s = m_segments[k];
-    if(k != on && !adjacent(s, m_segments[on])) { // a corner's two sides are a wedge
-      double t;
-      const P c = closest(s, q, t);
-      const double d = std::hypot(c[0] - q[0], c[1] - q[1]);
-      bool counts = d > 0 && d < best;
-      if(counts && s.loop == m_segments[on].loop) {
-        double along = std::abs(s.arc_a + t * s.length - arc);
-        along = (std::min)(along, m_loop_lengths[s.loop] - along);
-        counts = along > m_detour * d; // else a neighbour along the loop, not across a gap
-      }
-      if(counts) {
-        best = d;
-        found = true;
-        nearest = c;
-      }
-    }
-    // the nearer half first, so that the other is more often pruned
-    const std::size_t lb = b, le = m, rb = m + 1, re = e;
-    const double dl = lb < le ? distance(m_boxes[lb + (le - lb) / 2], q) : HUGE_VAL;
-    const double dr = rb < re ? distance(m_boxes[rb + (re - rb) / 2], q) : HUGE_VAL;
-    if(dl <= dr) {
-      search(lb, le, q, on, arc, best, found, nearest);
-      search(rb, re, q, on, arc, best, found, nearest);
-    } else {
-      search(rb, re, q, on, arc, best, found, nearest);
-      search(lb, le, q, on, arc, best, found, nearest);
-    }
+    std::vector<Bbox_2> result;
+    result.reserve(segments.size());
+    for(const Segment& s : segments)
+      result.emplace_back((std::min)(s.a[0], s.b[0]), (std::min)(s.a[1], s.b[1]),
+                          (std::max)(s.a[0], s.b[0]), (std::max)(s.a[1], s.b[1]));
+    return result;
   }
 
   std::vector<Segment> m_segments;
   std::vector<double> m_loop_lengths;
   double m_detour;
-  std::vector<std::size_t> m_order;
-  std::vector<Box> m_boxes;
+  std::vector<Bbox_2> m_boxes; // before m_tree, which keeps a reference to it
+  Loops_box_tree m_tree;        // the box tree the loop validation uses
 };
 
 // Size samples for every narrow region of the domain: see above. Each segment is sampled
