@@ -265,7 +265,7 @@ int main(int argc, char** argv)
     ->check(CLI::NonNegativeNumber);
   app.add_option("--max-depth", opt.max_depth,
                  "deepest quadtree level; a sizing that needs more is an error")
-    ->check(CLI::Range(0, 24));
+    ->check(CLI::Range(0, QM::Mesh_criteria_2<CGAL::Epick>::max_supported_depth));
   app.add_option("--max-cells", opt.max_cells,
                  "most quadtree cells to make before stopping with an error (a memory guard: "
                  "about 250 bytes each)")

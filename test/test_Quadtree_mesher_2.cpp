@@ -100,7 +100,7 @@ TEST(Quadtree_mesher_2, errors_name_the_points)
   EXPECT_THROW(Criteria(-1), QM::Meshing_error);
   EXPECT_THROW(Criteria(std::nan("")), QM::Meshing_error);
   EXPECT_THROW(Criteria(1, 2), QM::Meshing_error);
-  EXPECT_THROW(Criteria(0, 0, 30), QM::Meshing_error);
+  EXPECT_THROW(Criteria(0, 0, 41), QM::Meshing_error); // beyond max_supported_depth (40)
 }
 
 TEST(Quadtree_mesher_2, user_sizing_field)

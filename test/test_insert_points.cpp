@@ -81,7 +81,7 @@ TEST(Insert_points, tent_bounds_hold_over_every_displacement)
     Tree tree(K::Iso_rectangle_2(K::Point_2(0, 0), K::Point_2(1, 1)), 6);
     tree.refine([](const QM::Cell_key& k) { return k.level < 4; }); // g = 1/8 on [0,2]^2
     tree.balance();
-    std::vector<std::uint64_t> keys;
+    std::vector<QM::Key_code> keys;
     const Mesh base = QM::internal::templated_mesh(tree, nullptr, &keys);
     const double g = 0.125, reach = radius == 1 ? 3 * g / 16 : g / 2;
     double lo = 180, hi = 0, worst_aspect = 0;

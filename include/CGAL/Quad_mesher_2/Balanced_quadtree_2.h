@@ -47,7 +47,9 @@ public:
   typedef typename GeomTraits::Iso_rectangle_2 Iso_rectangle_2;
 
   /// Builds a tree of root cells only, covering `bbox` with a margin, able to refine down to
-  /// `max_depth` (cells of side `root_side/2^max_depth`; templates add half of that).
+  /// `max_depth` (cells of side `root_side/2^max_depth`; templates add half of that), at most
+  /// `max_supported_depth` (40), or less where doubles cannot hold that lattice exactly (see
+  /// `depth_limit()`).
   Balanced_quadtree_2(const Iso_rectangle_2& bbox, int max_depth = 20,
                       const GeomTraits& traits = GeomTraits())
     : m_traits(traits), m_max_depth(max_depth)
@@ -82,8 +84,8 @@ public:
     // From the doubles themselves: a lazy kernel then keeps one node per point, not three.
     return m_traits.construct_point_2_object()(lattice_x(level, x), lattice_y(level, y));
   }
-  std::uint32_t cells_x(int level) const { return m_nx << level; }
-  std::uint32_t cells_y(int level) const { return m_ny << level; }
+  std::uint64_t cells_x(int level) const { return std::uint64_t(m_nx) << level; }
+  std::uint64_t cells_y(int level) const { return std::uint64_t(m_ny) << level; }
   bool in_grid(int level, std::int64_t i, std::int64_t j) const
   {
     return i >= 0 && j >= 0 && i < std::int64_t(cells_x(level)) && j < std::int64_t(cells_y(level));
@@ -113,7 +115,7 @@ public:
   template <class Function>
   void for_each_leaf(Function f) const
   {
-    m_nodes.for_each([&](std::uint64_t code, std::uint32_t v) {
+    m_nodes.for_each([&](Key_code code, std::uint32_t v) {
       if(v == LEAF)
         f(Cell_key::from_code(code));
     });
@@ -141,8 +143,8 @@ public:
   /// the right); `p` must lie in the root grid. Decided with exact comparisons.
   Cell_key locate(const Point_2& p) const
   {
-    std::uint32_t i = lattice_index(m_traits.compute_x_2_object()(p), m_ox, m_nx, m_max_depth);
-    std::uint32_t j = lattice_index(m_traits.compute_y_2_object()(p), m_oy, m_ny, m_max_depth);
+    std::uint64_t i = lattice_index(m_traits.compute_x_2_object()(p), m_ox, m_nx, m_max_depth);
+    std::uint64_t j = lattice_index(m_traits.compute_y_2_object()(p), m_oy, m_ny, m_max_depth);
     for(int level = 0;; ++level) {
       Cell_key k(level, i >> (m_max_depth - level), j >> (m_max_depth - level));
       if(is_leaf(k))
@@ -216,8 +218,8 @@ public:
     CGAL_precondition(contains(p));
     if(level > m_max_depth)
       throw Meshing_error(depth_message(Cell_key(level, 0, 0), &p));
-    std::uint32_t i = lattice_index(m_traits.compute_x_2_object()(p), m_ox, m_nx, m_max_depth);
-    std::uint32_t j = lattice_index(m_traits.compute_y_2_object()(p), m_oy, m_ny, m_max_depth);
+    std::uint64_t i = lattice_index(m_traits.compute_x_2_object()(p), m_ox, m_nx, m_max_depth);
+    std::uint64_t j = lattice_index(m_traits.compute_y_2_object()(p), m_oy, m_ny, m_max_depth);
     for(int l = 0; l < level; ++l) {
       Cell_key k(l, i >> (m_max_depth - l), j >> (m_max_depth - l));
       if(is_leaf(k))
@@ -271,18 +273,24 @@ public:
         for(std::int64_t nj = j0; nj <= j0 + 1; ++nj)
           for(std::int64_t ni = i0; ni <= i0 + 1; ++ni)
             if(in_grid(level, ni, nj))
-              ensure_node(Cell_key(level - 1, std::uint32_t(ni >> 1), std::uint32_t(nj >> 1)));
+              ensure_node(Cell_key(level - 1, std::uint64_t(ni >> 1), std::uint64_t(nj >> 1)));
       }
     }
     m_new_leaves = nullptr;
     CGAL_expensive_postcondition(is_strongly_balanced());
   }
 
-  /// The Morton (Z-order) code of a cell's lower-left corner on the `max_depth()` lattice.
+  /// The Morton (Z-order) code of a cell's lower-left corner on the lattice of level
+  /// `min(max_depth(), 27)`, whose coordinates fit in 32 bits. Sorting by it follows the Z
+  /// curve; cells deeper than level 27 tie with the others in their level-27 cell.
   std::uint64_t morton_code(const Cell_key& k) const
   {
-    return spread_bits(std::uint64_t(k.i) << (m_max_depth - k.level))
-           | (spread_bits(std::uint64_t(k.j) << (m_max_depth - k.level)) << 1);
+    const int level = (std::min)(m_max_depth, morton_level);
+    const std::uint64_t i = level >= k.level ? std::uint64_t(k.i) << (level - k.level)
+                                             : std::uint64_t(k.i) >> (k.level - level);
+    const std::uint64_t j = level >= k.level ? std::uint64_t(k.j) << (level - k.level)
+                                             : std::uint64_t(k.j) >> (k.level - level);
+    return spread_bits(i) | (spread_bits(j) << 1);
   }
 
   /// `true` if leaves sharing an edge or a corner never differ by more than one level.
@@ -295,7 +303,7 @@ public:
           std::int64_t ni = std::int64_t(k.i) + dx, nj = std::int64_t(k.j) + dy;
           if(k.level < 2 || (dx == 0 && dy == 0) || !in_grid(k.level, ni, nj))
             continue;
-          if(!is_node(Cell_key(k.level - 1, std::uint32_t(ni >> 1), std::uint32_t(nj >> 1))))
+          if(!is_node(Cell_key(k.level - 1, std::uint64_t(ni >> 1), std::uint64_t(nj >> 1))))
             ok = false;
         }
     });
@@ -311,12 +319,17 @@ public:
   std::size_t max_leaves() const { return m_max_leaves; }
 
 
-  /// deepest `max_depth` the key packing allows
-  static constexpr int max_supported_depth = 24;
+  /// The deepest `max_depth` the tree accepts: 40 levels, cells of side `root_side/2^40`, about
+  /// 10^-12 of the input's extent. Cell and vertex keys hold it (96-bit codes); doubles hold its
+  /// lattice exactly for inputs within a few extents of the origin. Farther out the tree lowers
+  /// its depth to what doubles hold and says so in `depth_limit()`.
+  static constexpr int max_supported_depth = 40;
 
 private:
   static constexpr std::uint32_t LEAF = 1;
   static constexpr std::uint32_t SPLIT = 0;
+
+  static constexpr int morton_level = 27;
 
   // spreads the low 32 bits of x to the even bits of the result
   static std::uint64_t spread_bits(std::uint64_t x)
@@ -401,7 +414,7 @@ private:
 
   // The index of the lattice interval [origin + i h, origin + (i+1) h) containing x, with h
   // the cell side at `level`; exact, and clamped into the grid.
-  std::uint32_t lattice_index(const FT& x, double origin, std::uint32_t root_cells, int level) const
+  std::uint64_t lattice_index(const FT& x, double origin, std::uint32_t root_cells, int level) const
   {
     const double h = cell_side(level);
     const std::int64_t n = std::int64_t(root_cells) << level;
@@ -412,7 +425,7 @@ private:
       --i;
     while(i + 1 < n && !(x < FT(origin + double(i + 1) * h)))
       ++i;
-    return std::uint32_t(i);
+    return std::uint64_t(i);
   }
 
 public:
@@ -441,6 +454,16 @@ private:
   }
 
   static constexpr double max_aspect = 16;
+  // the most root cells in a row (setup_root) times 2^max_supported_depth cells, and twice that
+  // many vertices, fit the keys
+  static_assert((max_aspect + 2) * double(std::uint64_t(1) << max_supported_depth)
+                  < double(std::uint64_t(1) << Cell_key::coordinate_bits)
+                && (max_aspect + 2) * double(std::uint64_t(1) << (max_supported_depth + 1))
+                     < double(std::uint64_t(1) << internal::lattice_key_bits)
+                && max_supported_depth < Cell_key::max_level
+                && (max_aspect + 2) * double(std::uint64_t(1) << morton_level)
+                     < double(std::uint64_t(1) << 32),
+                "keys too short for max_supported_depth");
   // cells smaller than this would have squared lengths near double's underflow
   static constexpr double min_cell_side = 1e-140;
 

@@ -42,8 +42,11 @@ public:
   /// a target cell side at a point; must be positive
   typedef std::function<FT(const Point_2&)> Sizing_field;
 
-  static constexpr int default_max_depth = 24;
+  /// the deepest quadtree level `max_depth()` accepts: 40, cells of side `root_side/2^40`
+  /// (input points about 10^-10 of the extent apart still become vertices); the tree may
+  /// stop earlier where doubles cannot hold its lattice exactly (far from the origin)
   static constexpr int max_supported_depth = Balanced_quadtree_2<GeomTraits>::max_supported_depth;
+  static constexpr int default_max_depth = max_supported_depth;
 
   /// `max_size` and `min_size` of 0 mean "no bound".
   explicit Mesh_criteria_2(double max_size = 0, double min_size = 0,

@@ -411,7 +411,7 @@ private:
   std::unique_ptr<Quadtree> m_tree;
   Domain_loops_2<GeomTraits> m_loops;           // of a domain with segments
   std::vector<internal::Point_anchor> m_anchors;
-  std::vector<std::uint64_t> m_vertex_keys;     // of the core mesh's vertices
+  std::vector<Key_code> m_vertex_keys;          // of the core mesh's vertices
   std::vector<Cell_key> m_quad_cells;           // the leaf of each core-mesh quad
   std::vector<Point_2> m_anchored_points;       // the points insert_points() makes vertices
   std::array<std::size_t, 4> m_removed{ { 0, 0, 0, 0 } };

@@ -5,6 +5,10 @@
 #ifndef CGAL_QUAD_MESHER_2_INTERNAL_KEY_MAP_H
 #define CGAL_QUAD_MESHER_2_INTERNAL_KEY_MAP_H
 
+#include <CGAL/Quad_mesher_2/Cell_key.h>
+
+#include <CGAL/assertions.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <utility>
@@ -14,14 +18,25 @@ namespace CGAL {
 namespace Quad_mesher_2 {
 namespace internal {
 
-// Open-addressing hash map from 64-bit integer keys to 32-bit values. Cell and vertex keys
-// are looked up millions of times per mesh; std::unordered_map's node allocations would
-// dominate both time and memory there.
+// Lattice vertices (X, Y), 0 <= X, Y < 2^47, as 96-bit keys: X << 48 | Y.
+constexpr int lattice_key_bits = 47;
+inline Key_code lattice_key(std::uint64_t X, std::uint64_t Y)
+{
+  CGAL_assertion(X >> lattice_key_bits == 0 && Y >> lattice_key_bits == 0);
+  return (Key_code(X >> 16) << 64) | ((X << 48) | Y); // in 64-bit halves: cheaper
+}
+inline std::int64_t lattice_key_x(Key_code key) { return std::int64_t(key >> 48); }
+inline std::int64_t lattice_key_y(Key_code key)
+{
+  return std::int64_t(std::uint64_t(key) & ((std::uint64_t(1) << 48) - 1));
+}
+
+// Open-addressing hash map from 96-bit integer keys (cell codes, lattice keys; bits 64 to 95
+// never all ones) to 32-bit values. Cell and vertex keys are looked up millions of times per
+// mesh; std::unordered_map's node allocations would dominate both time and memory there.
 class Key_map
 {
 public:
-  static constexpr std::uint64_t empty_key = ~std::uint64_t(0);
-
   explicit Key_map(std::size_t expected = 16) { reserve(expected); }
 
   void reserve(std::size_t expected)
@@ -35,33 +50,40 @@ public:
 
   std::size_t size() const { return m_size; }
 
-  const std::uint32_t* find(std::uint64_t key) const
+  const std::uint32_t* find(Key_code key) const
   {
-    for(std::size_t slot = hash(key) & m_mask;; slot = (slot + 1) & m_mask) {
-      if(m_slots[slot].key == key)
-        return &m_slots[slot].value;
-      if(m_slots[slot].key == empty_key)
+    const std::uint64_t lo = std::uint64_t(key);
+    const std::uint32_t hi = std::uint32_t(key >> 64);
+    for(std::size_t slot = hash(lo, hi) & m_mask;; slot = (slot + 1) & m_mask) {
+      const Slot& s = m_slots[slot];
+      if(s.lo == lo && s.hi == hi)
+        return &s.value;
+      if(s.hi == empty_hi)
         return nullptr;
     }
   }
 
-  std::uint32_t* find(std::uint64_t key)
+  std::uint32_t* find(Key_code key)
   {
     return const_cast<std::uint32_t*>(static_cast<const Key_map&>(*this).find(key));
   }
 
   // Inserts (key, value) unless key is present; returns the stored value and whether it
   // was inserted.
-  std::pair<std::uint32_t*, bool> insert(std::uint64_t key, std::uint32_t value)
+  std::pair<std::uint32_t*, bool> insert(Key_code key, std::uint32_t value)
   {
+    CGAL_precondition((key >> 96) == 0 && std::uint32_t(key >> 64) != empty_hi);
     if(2 * (m_size + 1) > m_slots.size())
       rehash(2 * m_slots.size());
-    for(std::size_t slot = hash(key) & m_mask;; slot = (slot + 1) & m_mask) {
+    const std::uint64_t lo = std::uint64_t(key);
+    const std::uint32_t hi = std::uint32_t(key >> 64);
+    for(std::size_t slot = hash(lo, hi) & m_mask;; slot = (slot + 1) & m_mask) {
       Slot& s = m_slots[slot];
-      if(s.key == key)
+      if(s.lo == lo && s.hi == hi)
         return { &s.value, false };
-      if(s.key == empty_key) {
-        s.key = key;
+      if(s.hi == empty_hi) {
+        s.lo = lo;
+        s.hi = hi;
         s.value = value;
         ++m_size;
         return { &s.value, true };
@@ -73,37 +95,42 @@ public:
   void for_each(Function f) const
   {
     for(const Slot& s : m_slots)
-      if(s.key != empty_key)
-        f(s.key, s.value);
+      if(s.hi != empty_hi)
+        f((Key_code(s.hi) << 64) | Key_code(s.lo), s.value);
   }
 
 
 private:
-  static std::size_t hash(std::uint64_t x)
+  static constexpr std::uint32_t empty_hi = ~std::uint32_t(0);
+
+  static std::size_t hash(std::uint64_t lo, std::uint32_t hi)
   {
     // splitmix64 finaliser: keys differ in low bits only, so they need mixing.
+    std::uint64_t x = lo ^ (std::uint64_t(hi) * 0x9e3779b97f4a7c15ULL);
     x ^= x >> 30; x *= 0xbf58476d1ce4e5b9ULL;
     x ^= x >> 27; x *= 0x94d049bb133111ebULL;
     x ^= x >> 31;
     return static_cast<std::size_t>(x);
   }
 
-  // key and value side by side: one cache miss per probe, not two
+  // the key's 96 bits and the value side by side in 16 bytes: one cache miss per probe
   struct Slot
   {
-    std::uint64_t key;
+    std::uint64_t lo;
+    std::uint32_t hi;
     std::uint32_t value;
   };
+  static_assert(sizeof(Slot) == 16, "a slot takes 16 bytes");
 
   void rehash(std::size_t capacity)
   {
-    std::vector<Slot> slots(capacity, Slot{ empty_key, 0 });
+    std::vector<Slot> slots(capacity, Slot{ 0, empty_hi, 0 });
     std::size_t mask = capacity - 1;
     for(const Slot& old : m_slots) {
-      if(old.key == empty_key)
+      if(old.hi == empty_hi)
         continue;
-      std::size_t s = hash(old.key) & mask;
-      while(slots[s].key != empty_key)
+      std::size_t s = hash(old.lo, old.hi) & mask;
+      while(slots[s].hi != empty_hi)
         s = (s + 1) & mask;
       slots[s] = old;
     }

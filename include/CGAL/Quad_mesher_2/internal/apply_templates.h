@@ -48,8 +48,8 @@ bool is_active_vertex(const Tree& tree, const Cell_key& k, std::int64_t X, std::
     return false;
   for(std::int64_t j = Y - 1; j <= Y; ++j)
     for(std::int64_t i = X - 1; i <= X; ++i)
-      if((i != k.i || j != k.j) && tree.in_grid(k.level, i, j)
-         && tree.is_split(Cell_key(k.level, std::uint32_t(i), std::uint32_t(j))))
+      if((i != std::int64_t(k.i) || j != std::int64_t(k.j)) && tree.in_grid(k.level, i, j)
+         && tree.is_split(Cell_key(k.level, std::uint64_t(i), std::uint64_t(j))))
         return true;
   return false;
 }
@@ -102,11 +102,11 @@ std::vector<Cell_key> leaves_in_morton_order(const Tree& tree)
 // The conforming all-quad mesh of a strongly balanced tree: every leaf replaced by its
 // template. Vertices are deduplicated by their integer key on the finest lattice, never by
 // comparing coordinates. If `quad_cells` is given, it receives the leaf of each quad; if
-// `vertex_keys` is, the key of each vertex on the tree's vertex lattice (x << 32 | y).
+// `vertex_keys` is, the key of each vertex on the tree's vertex lattice (`lattice_key(X, Y)`).
 template <class Tree>
 Quad_mesh_2<typename Tree::Point_2>
 templated_mesh(const Tree& tree, std::vector<Cell_key>* quad_cells = nullptr,
-               std::vector<std::uint64_t>* vertex_keys_out = nullptr)
+               std::vector<Key_code>* vertex_keys_out = nullptr)
 {
   CGAL_precondition(tree.is_strongly_balanced());
   typedef typename Tree::Point_2 Point_2;
@@ -114,11 +114,12 @@ templated_mesh(const Tree& tree, std::vector<Cell_key>* quad_cells = nullptr,
   const int vertex_level = tree.vertex_level();
   const std::size_t expected = tree.number_of_leaves() * 2;
   Key_map vertex_index(expected);
+  std::uint32_t number_of_vertices = 0;
   mesh.quads.reserve(expected);
-  std::vector<std::uint64_t> vertex_keys;
-  vertex_keys.reserve(expected);
-  if(quad_cells != nullptr)
+  if(quad_cells != nullptr) {
     quad_cells->clear();
+    quad_cells->reserve(expected);
+  }
 
   for(const Cell_key& k : leaves_in_morton_order(tree)) {
     const Quad_template& t = template_of(choose_template(tree, k));
@@ -129,11 +130,10 @@ templated_mesh(const Tree& tree, std::vector<Cell_key>* quad_cells = nullptr,
       typename Quad_mesh_2<Point_2>::Quad quad;
       for(int c = 0; c < 4; ++c) {
         const Local_vertex& v = t.quads[q][c];
-        const std::uint64_t key = ((x0 + (std::uint64_t(v.x) << shift)) << 32)
-                                  | (y0 + (std::uint64_t(v.y) << shift));
-        auto inserted = vertex_index.insert(key, std::uint32_t(vertex_keys.size()));
-        if(inserted.second)
-          vertex_keys.push_back(key);
+        const Key_code key = lattice_key(x0 + (std::uint64_t(v.x) << shift),
+                                         y0 + (std::uint64_t(v.y) << shift));
+        auto inserted = vertex_index.insert(key, number_of_vertices);
+        number_of_vertices += inserted.second;
         quad[c] = *inserted.first;
       }
       mesh.quads.push_back(quad);
@@ -142,10 +142,14 @@ templated_mesh(const Tree& tree, std::vector<Cell_key>* quad_cells = nullptr,
     }
   }
 
+  // The keys in vertex order, taken from the map, which goes before the points come: the
+  // map and the points are never held together (peak memory).
+  std::vector<Key_code> vertex_keys(number_of_vertices);
+  vertex_index.for_each([&](Key_code key, std::uint32_t v) { vertex_keys[v] = key; });
+  vertex_index = Key_map();
   mesh.points.reserve(vertex_keys.size());
-  for(std::uint64_t key : vertex_keys)
-    mesh.points.push_back(tree.lattice_point(vertex_level, std::int64_t(key >> 32),
-                                             std::int64_t(key & 0xffffffffu)));
+  for(Key_code key : vertex_keys)
+    mesh.points.push_back(tree.lattice_point(vertex_level, lattice_key_x(key), lattice_key_y(key)));
   if(vertex_keys_out != nullptr)
     vertex_keys_out->swap(vertex_keys);
   return mesh;

@@ -124,7 +124,7 @@ std::vector<Point_anchor> anchor_points(Tree& tree, const PointRange& points, st
         }
         for(std::int64_t j = a.Y - a.radius; j < a.Y + a.radius; ++j)
           for(std::int64_t k = a.X - a.radius; k < a.X + a.radius; ++k)
-            tree.ensure_node(Cell_key(a.level, std::uint32_t(k), std::uint32_t(j)));
+            tree.ensure_node(Cell_key(a.level, std::uint64_t(k), std::uint64_t(j)));
       }
       cells += 4 * a.radius * a.radius;
     }
@@ -138,7 +138,7 @@ std::vector<Point_anchor> anchor_points(Tree& tree, const PointRange& points, st
       const int r = a.radius;
       for(std::int64_t j = a.Y - r - 1; j < a.Y + r + 1; ++j)
         for(std::int64_t k = a.X - r - 1; k < a.X + r + 1; ++k) {
-          Cell_key c(a.level, std::uint32_t(k), std::uint32_t(j));
+          Cell_key c(a.level, std::uint64_t(k), std::uint64_t(j));
           const bool inner = j >= a.Y - r && j < a.Y + r && k >= a.X - r && k < a.X + r;
           if(tree.is_split(c) || (inner && !tree.is_leaf(c)))
             crowded[i] = true;
@@ -169,7 +169,7 @@ std::vector<Point_anchor> anchor_points(Tree& tree, const PointRange& points, st
 // the vertex of each anchor's point.
 template <class Tree, class PointRange>
 std::vector<std::size_t> move_anchors(const Tree& tree, Quad_mesh_2<typename Tree::Point_2>& mesh,
-                  const std::vector<std::uint64_t>& vertex_keys,
+                  const std::vector<Key_code>& vertex_keys,
                   const std::vector<Point_anchor>& anchors, const PointRange& points)
 {
   typedef typename Tree::FT FT;
@@ -186,7 +186,7 @@ std::vector<std::size_t> move_anchors(const Tree& tree, Quad_mesh_2<typename Tre
   for(const Point_anchor& a : anchors) {
     const int shift = top - a.level;
     auto vertex = [&](std::int64_t X, std::int64_t Y) {
-      const std::uint32_t* v = index.find((std::uint64_t(X) << shift << 32) | (std::uint64_t(Y) << shift));
+      const std::uint32_t* v = index.find(lattice_key(std::uint64_t(X) << shift, std::uint64_t(Y) << shift));
       CGAL_assertion(v != nullptr);
       return *v;
     };
