@@ -8,6 +8,8 @@
 #include "qm2_test_kernel.h"
 
 #include <CGAL/Quad_mesher_2/Balanced_quadtree_2.h>
+#include <CGAL/Quad_mesher_2/Mesh_criteria_2.h>
+#include <CGAL/Quad_mesher_2/internal/Key_map.h>
 #include <CGAL/Quad_mesher_2/internal/apply_templates.h>
 
 #include <gtest/gtest.h>
@@ -329,3 +331,173 @@ TEST(Balanced_quadtree_2, scaling_by_powers_of_two_keeps_the_topology)
 }
 
 } // namespace qm2_test_quadtree
+
+// Issue 3: depths beyond the 24 levels that 64-bit keys held, up to 40.
+namespace qm2_test_deep_keys {
+
+using qm2_test::K;
+namespace QM = CGAL::Quad_mesher_2;
+using Tree = QM::Balanced_quadtree_2<K>;
+using QM::Cell_key;
+
+TEST(Balanced_quadtree_2, deep_cell_keys_round_trip)
+{
+  EXPECT_GE(Tree::max_supported_depth, 40);
+  EXPECT_EQ(QM::Mesh_criteria_2<K>::max_supported_depth, Tree::max_supported_depth);
+  const std::uint64_t top = (std::uint64_t(18) << 40) - 1; // the most cells in a row at level 40
+  const std::uint64_t coordinates[] = { 0, 1, 2, (std::uint64_t(1) << 19) - 1, std::uint64_t(1) << 19,
+                                        std::uint64_t(1) << 32, (std::uint64_t(1) << 45) - 1, top,
+                                        0x0123456789aULL };
+  std::set<std::pair<std::uint64_t, std::uint64_t>> codes;
+  std::size_t n = 0;
+  for(int level : { 0, 1, 24, 25, 31, 32, 39, 40, 41, Cell_key::max_level })
+    for(std::uint64_t i : coordinates)
+      for(std::uint64_t j : coordinates) {
+        const Cell_key k(level, i, j);
+        ASSERT_EQ(k.level, level);
+        ASSERT_EQ(std::uint64_t(k.i), i);
+        ASSERT_EQ(std::uint64_t(k.j), j);
+        const QM::Key_code c = k.code();
+        ASSERT_EQ(std::uint64_t(c >> 96), 0u);           // 96 bits
+        ASSERT_NE(std::uint32_t(c >> 64), ~std::uint32_t(0)); // never the empty-slot mark
+        ASSERT_EQ(Cell_key::from_code(c), k);
+        codes.insert({ std::uint64_t(c >> 64), std::uint64_t(c) });
+        ++n;
+        if(level > 0 && level < Cell_key::max_level) {
+          ASSERT_EQ(k.child(1, 1).parent(), k);
+          ASSERT_EQ(std::uint64_t(k.child(1, 0).i), 2 * i + 1);
+        }
+      }
+  EXPECT_EQ(codes.size(), n); // unique
+  EXPECT_LT(Cell_key(40, top, 0), Cell_key(40, top, 1));
+  EXPECT_LT(Cell_key(39, top, top), Cell_key(40, 0, 0));
+}
+
+TEST(Balanced_quadtree_2, key_map_tells_keys_apart_above_bit_64)
+{
+  QM::internal::Key_map map;
+  std::vector<QM::Key_code> keys;
+  for(std::uint64_t hi : { 0u, 1u, 2u, 0x7fffffffu, 0xfffffffeu })
+    for(std::uint64_t lo : { std::uint64_t(0), std::uint64_t(1), ~std::uint64_t(0) })
+      keys.push_back((QM::Key_code(hi) << 64) | lo);
+  for(std::size_t v = 0; v < keys.size(); ++v)
+    EXPECT_TRUE(map.insert(keys[v], std::uint32_t(v)).second);
+  for(int grow = 0; grow < 1000; ++grow) // rehashes
+    map.insert(QM::Key_code(grow + 1000) << 70, 0);
+  for(std::size_t v = 0; v < keys.size(); ++v) {
+    ASSERT_NE(map.find(keys[v]), nullptr);
+    EXPECT_EQ(*map.find(keys[v]), v);
+    EXPECT_FALSE(map.insert(keys[v], 99).second);
+  }
+  EXPECT_EQ(map.find(QM::Key_code(3) << 64), nullptr);
+  std::size_t seen = 0;
+  map.for_each([&](QM::Key_code key, std::uint32_t v) { seen += v < keys.size() && key == keys[v]; });
+  EXPECT_EQ(seen, keys.size());
+  EXPECT_EQ(map.size(), keys.size() + 1000);
+  // lattice vertex keys of the deepest vertex lattice
+  const std::uint64_t big = (std::uint64_t(1) << QM::internal::lattice_key_bits) - 1;
+  for(std::uint64_t x : { std::uint64_t(0), std::uint64_t(65535), std::uint64_t(65536), big })
+    for(std::uint64_t y : { std::uint64_t(0), std::uint64_t(1) << 40, big }) {
+      QM::Key_code key = QM::internal::lattice_key(x, y);
+      EXPECT_EQ(QM::internal::lattice_key_x(key), std::int64_t(x));
+      EXPECT_EQ(QM::internal::lattice_key_y(key), std::int64_t(y));
+      EXPECT_NE(std::uint32_t(key >> 64), ~std::uint32_t(0));
+    }
+}
+
+// One point refined to level 40, then balanced and templated: a tree 40 levels deep (64-bit
+// keys held 24) whose leaves, mesh vertices and Morton order are all consistent.
+TEST(Balanced_quadtree_2, refinement_to_depth_40_balances_and_templates)
+{
+  // [0,1]^2: root side 2 anchored at the origin; the lattice is exact in doubles this close
+  Tree t(K::Iso_rectangle_2(K::Point_2(0, 0), K::Point_2(1, 1)), 40);
+  ASSERT_EQ(t.max_depth(), 40) << t.depth_limit();
+  const K::Point_2 p(0.7 + 1e-11, 0.3 - 3e-12), q(0.7 + 2e-11, 0.3 - 3e-12);
+  t.refine_at(p, 40);
+  t.refine_at(q, 40);
+  const Cell_key kp = t.locate(p), kq = t.locate(q);
+  EXPECT_EQ(kp.level, 40);
+  EXPECT_EQ(kq.level, 40);
+  EXPECT_NE(kp, kq);
+  EXPECT_NE(t.cell_rectangle(kp).bounded_side(p), CGAL::ON_UNBOUNDED_SIDE);
+  EXPECT_NE(t.cell_rectangle(kq).bounded_side(q), CGAL::ON_UNBOUNDED_SIDE);
+  EXPECT_EQ(t.cell_rectangle(kp).xmax() - t.cell_rectangle(kp).xmin(), std::ldexp(1.0, -39));
+  auto w = t.nearest_vertex(p, 40);
+  EXPECT_LE(std::abs(t.lattice_x(40, w.first) - 0.7 - 1e-11), std::ldexp(1.0, -40));
+  EXPECT_LE(std::abs(t.lattice_y(40, w.second) - 0.3 + 3e-12), std::ldexp(1.0, -40));
+  t.balance();
+  EXPECT_EQ(t.depth(), 40);
+  EXPECT_TRUE(t.is_strongly_balanced());
+  // leaves round-trip through the node map's codes
+  std::size_t leaves = 0;
+  t.for_each_leaf([&](const Cell_key& k) {
+    ++leaves;
+    EXPECT_TRUE(t.is_leaf(k));
+    EXPECT_FALSE(t.is_leaf(k.parent())) << k.level;
+  });
+  EXPECT_EQ(leaves, t.number_of_leaves());
+  // Morton order: Z order down to level 27, cells below it tie with their level-27 cell
+  EXPECT_LT(t.morton_code(Cell_key(27, 0, 0)), t.morton_code(Cell_key(27, 1, 0)));
+  EXPECT_LT(t.morton_code(Cell_key(27, 1, 0)), t.morton_code(Cell_key(27, 0, 1)));
+  EXPECT_LT(t.morton_code(Cell_key(27, 1, 1)), t.morton_code(Cell_key(26, 1, 0)));
+  EXPECT_EQ(t.morton_code(kp), t.morton_code(Cell_key(27, kp.i >> 13, kp.j >> 13)));
+  EXPECT_LE(t.morton_code(kp.parent()), t.morton_code(kp));
+  EXPECT_LT(t.morton_code(Cell_key(40, 0, 0)), t.morton_code(kp));
+  std::vector<QM::Key_code> keys;
+  std::vector<Cell_key> cells;
+  auto mesh = QM::internal::templated_mesh(t, &cells, &keys);
+  ASSERT_EQ(keys.size(), mesh.points.size());
+  ASSERT_EQ(cells.size(), mesh.quads.size());
+  EXPECT_TRUE(qm2_checks::tiles_rectangle(mesh, 0, 0, 2, 2));
+  auto range = qm2_checks::angle_range(mesh);
+  EXPECT_GE(range.min, 45 - 1e-9);
+  EXPECT_LE(range.max, 135 + 1e-9);
+  // every vertex sits exactly on its key's lattice point, and the finest cells are there
+  bool finest = false;
+  for(std::size_t v = 0; v < keys.size(); ++v) {
+    ASSERT_EQ(CGAL::to_double(mesh.points[v].x()), t.lattice_x(41, QM::internal::lattice_key_x(keys[v])));
+    ASSERT_EQ(CGAL::to_double(mesh.points[v].y()), t.lattice_y(41, QM::internal::lattice_key_y(keys[v])));
+  }
+  for(const Cell_key& c : cells)
+    finest = finest || c.level == 40;
+  EXPECT_TRUE(finest);
+}
+
+TEST(Balanced_quadtree_2, depth_beyond_the_supported_one_is_a_clear_error)
+{
+  const K::Iso_rectangle_2 box(K::Point_2(0, 0), K::Point_2(1, 1));
+  try {
+    Tree t(box, Tree::max_supported_depth + 1);
+    FAIL() << "no error";
+  } catch(const QM::Meshing_error& e) {
+    EXPECT_NE(std::string(e.what()).find("is outside [0, 40]"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(QM::Mesh_criteria_2<K>(0, 0, 41), QM::Meshing_error);
+  EXPECT_NO_THROW(QM::Mesh_criteria_2<K>(0, 0, 40));
+  Tree t(box, 40);
+  try {
+    t.refine_at(K::Point_2(0.5, 0.5), 41);
+    FAIL() << "no error";
+  } catch(const QM::Meshing_error& e) {
+    EXPECT_NE(std::string(e.what()).find("maximum depth 40"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Balanced_quadtree_2, precision_limits_depth_40_far_from_the_origin)
+{
+  // near the origin doubles hold 40 levels; at 1e4 extents away they do not, and the tree
+  // says so instead of rounding
+  Tree near(K::Iso_rectangle_2(K::Point_2(-3, 2), K::Point_2(-2, 3)), 40);
+  EXPECT_EQ(near.max_depth(), 40) << near.depth_limit();
+  Tree far(K::Iso_rectangle_2(K::Point_2(1e4, 1e4), K::Point_2(1e4 + 1, 1e4 + 1)), 40);
+  EXPECT_LT(far.max_depth(), 40);
+  EXPECT_GE(far.max_depth(), 30);
+  EXPECT_NE(far.depth_limit().find("exactly this far from the origin"), std::string::npos) << far.depth_limit();
+  // the deepest vertex lattice it keeps is exact: its last step changes the coordinate
+  const int level = far.vertex_level();
+  const std::int64_t x = std::int64_t(far.cells_x(level)) - 1;
+  EXPECT_NE(far.lattice_x(level, x), far.lattice_x(level, x - 1));
+  EXPECT_EQ(far.lattice_x(level, x) - far.lattice_x(level, x - 1), far.cell_side(level));
+}
+
+} // namespace qm2_test_deep_keys

@@ -246,3 +246,74 @@ TEST(Insert_points, isolated_points_of_a_domain_survive_the_clearance)
 }
 
 } // namespace qm2_test_points
+
+namespace qm2_test_points {
+
+// Issue 3: points 1e-9 or 1e-10 of the extent apart need 32 to 40 quadtree levels, beyond
+// the 24 that 64-bit cell and vertex keys held.
+void check_deep(const std::vector<K::Point_2>& pts, const char* what, int min_depth)
+{
+  SCOPED_TRACE(what);
+  Domain d = make(pts);
+  Mesher mesher(d);
+  Mesh mesh = mesher.run();
+  EXPECT_TRUE(lemma_1(mesher, mesh, mesher.points()));
+  EXPECT_EQ(mesher.points().size(), pts.size());
+  EXPECT_EQ(mesher.point_vertices().size(), pts.size());
+  EXPECT_GE(mesher.quadtree().depth(), min_depth);
+  EXPECT_LE(mesher.quadtree().depth(), 40);
+}
+
+std::vector<K::Point_2> close_pairs(double gap, unsigned seed)
+{
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<K::Point_2> pts = { K::Point_2(0, 0), K::Point_2(1, 1),
+                                  K::Point_2(0.5, 0.5), K::Point_2(0.5 + gap, 0.5),       // across
+                                  K::Point_2(0.25, 0.75), K::Point_2(0.25 + gap, 0.75 + gap), // diagonal
+                                  K::Point_2(1.0 / 3, 0.2), K::Point_2(1.0 / 3, 0.2 + gap),   // off the lattice
+                                  K::Point_2(0.8, 0.3), K::Point_2(0.8 + gap, 0.3), K::Point_2(0.8 + 2 * gap, 0.3) };
+  for(int i = 0; i < 30; ++i)
+    pts.emplace_back(u(rng), u(rng));
+  return pts;
+}
+
+TEST(Insert_points, points_1e_9_of_the_extent_apart)
+{
+  check_deep({ K::Point_2(0, 0), K::Point_2(1, 1), K::Point_2(0.5, 0.5), K::Point_2(0.5 + 1e-9, 0.5) },
+             "one pair", 31);
+  check_deep(close_pairs(1e-9, 21), "pairs, a triple and random points", 31);
+  std::vector<K::Point_2> shifted;
+  for(const K::Point_2& p : close_pairs(1e-9, 22))
+    shifted.emplace_back(p.x() * 3 - 7, p.y() * 3 + 5); // extent 3, off the origin
+  check_deep(shifted, "scaled and shifted", 31);
+}
+
+TEST(Insert_points, points_1e_10_of_the_extent_apart)
+{
+  check_deep({ K::Point_2(0, 0), K::Point_2(1, 1), K::Point_2(0.5, 0.5), K::Point_2(0.5 + 1e-10, 0.5) },
+             "one pair", 35);
+  check_deep(close_pairs(1e-10, 23), "pairs, a triple and random points", 35);
+}
+
+TEST(Insert_points, too_close_for_depth_40_is_a_clear_error)
+{
+  Domain d = make({ K::Point_2(0, 0), K::Point_2(1, 1), K::Point_2(0.5, 0.5), K::Point_2(0.5, 0.5 + 1e-13) });
+  try {
+    Mesher(d).run();
+    FAIL() << "no error";
+  } catch(const QM::Meshing_error& e) {
+    EXPECT_NE(std::string(e.what()).find("separating them needs quadtree depth"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("beyond the maximum depth 40"), std::string::npos) << e.what();
+  }
+  // the sizing alone fits in 40 levels, the blocks that make both points vertices do not
+  d = make({ K::Point_2(0, 0), K::Point_2(1, 1), K::Point_2(0.5, 0.5), K::Point_2(0.5, 0.5 + 1e-11) });
+  try {
+    Mesher(d).run();
+    FAIL() << "no error";
+  } catch(const QM::Meshing_error& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot be made a mesh vertex within the maximum depth 40"), std::string::npos) << e.what();
+  }
+}
+
+} // namespace qm2_test_points
