@@ -500,4 +500,17 @@ TEST(Balanced_quadtree_2, precision_limits_depth_40_far_from_the_origin)
   EXPECT_EQ(far.lattice_x(level, x) - far.lattice_x(level, x - 1), far.cell_side(level));
 }
 
+TEST(Balanced_quadtree_2, root_grid_does_not_move_with_the_maximum_depth)
+{
+  // depths beyond 24 keep the grid (and so the meshes) of the 24 levels earlier versions had
+  const K::Iso_rectangle_2 box(K::Point_2(-0.1234567, 0.7654321), K::Point_2(3.3, 2.9));
+  const Tree t24(box, 24), t40(box, 40), t10(box, 10);
+  EXPECT_EQ(t40.origin_x(), t24.origin_x());
+  EXPECT_EQ(t40.origin_y(), t24.origin_y());
+  EXPECT_EQ(t40.root_cells_x(), t24.root_cells_x());
+  EXPECT_EQ(t40.root_side(), t24.root_side());
+  EXPECT_EQ(std::fmod(t10.origin_x(), std::ldexp(t10.root_side(), -11)), 0.0); // its finest lattice
+  EXPECT_LE(t24.origin_x() - t10.origin_x(), std::ldexp(t10.root_side(), -11));
+}
+
 } // namespace qm2_test_deep_keys

@@ -306,14 +306,18 @@ TEST(Insert_points, too_close_for_depth_40_is_a_clear_error)
     EXPECT_NE(std::string(e.what()).find("separating them needs quadtree depth"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("beyond the maximum depth 40"), std::string::npos) << e.what();
   }
-  // the sizing alone fits in 40 levels, the blocks that make both points vertices do not
-  d = make({ K::Point_2(0, 0), K::Point_2(1, 1), K::Point_2(0.5, 0.5), K::Point_2(0.5, 0.5 + 1e-11) });
+  // 1e-10 apart: the sizing fits in 35 levels (cells of 2^-34), the blocks that make both
+  // points vertices do not (they need 37)
+  d = make({ K::Point_2(0, 0), K::Point_2(1, 1), K::Point_2(0.5, 0.5), K::Point_2(0.5, 0.5 + 1e-10) });
   try {
-    Mesher(d).run();
+    Mesher(d, QM::Mesh_criteria_2<K>(0, 0, 35)).run();
     FAIL() << "no error";
   } catch(const QM::Meshing_error& e) {
-    EXPECT_NE(std::string(e.what()).find("cannot be made a mesh vertex within the maximum depth 40"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("cannot be made a mesh vertex within the maximum depth 35"), std::string::npos) << e.what();
   }
+  Mesher deep(d, QM::Mesh_criteria_2<K>(0, 0, 37));
+  Mesh mesh = deep.run();
+  EXPECT_TRUE(lemma_1(deep, mesh, d.points));
 }
 
 } // namespace qm2_test_points

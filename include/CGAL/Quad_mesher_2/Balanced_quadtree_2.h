@@ -330,6 +330,7 @@ private:
   static constexpr std::uint32_t SPLIT = 0;
 
   static constexpr int morton_level = 27;
+  static constexpr int snap_depth = 24;
 
   // spreads the low 32 bits of x to the even bits of the result
   static std::uint64_t spread_bits(std::uint64_t x)
@@ -397,9 +398,12 @@ private:
       m_depth_limit = msg.str();
       m_max_depth = exact_depth;
     }
-    const double finest = std::ldexp(m_root_side, -(m_max_depth + 1));
-    m_ox = std::floor(xmin / finest) * finest;
-    m_oy = std::floor(ymin / finest) * finest;
+    // The origin lies on the vertex lattice of level min(max_depth, 24) + 1, which the deeper
+    // lattices contain: the grid of an input that needed at most the 24 levels of earlier
+    // versions does not move with the maximum depth, nor does its mesh.
+    const double snap = std::ldexp(m_root_side, -((std::min)(m_max_depth, snap_depth) + 1));
+    m_ox = std::floor(xmin / snap) * snap;
+    m_oy = std::floor(ymin / snap) * snap;
     // Strictly inside: cells are half-open, so the upper bounds need their own cell.
     m_nx = std::uint32_t(std::floor((xmax - m_ox) / m_root_side)) + 1;
     m_ny = std::uint32_t(std::floor((ymax - m_oy) / m_root_side)) + 1;
