@@ -34,7 +34,7 @@ struct Options
   std::vector<std::string> outputs;
   std::string report;
   std::string kernel = "epick";
-  std::string stop_after = "points";
+  std::string stop_after; // empty: every stage the input has
   double max_size = 0;
   double min_size = 0;
   int max_depth = QM::Mesh_criteria_2<CGAL::Epick>::default_max_depth;
@@ -47,7 +47,8 @@ struct Options
 };
 
 const std::vector<std::string> output_extensions = { ".msh", ".vtu", ".off", ".svg" };
-const QM::Stage all_stages[] = { QM::Stage::QUADTREE, QM::Stage::POINTS, QM::Stage::CLEARANCE };
+const QM::Stage all_stages[] = { QM::Stage::QUADTREE, QM::Stage::POINTS, QM::Stage::CLEARANCE,
+                                 QM::Stage::TEMPLATES, QM::Stage::BUFFER1, QM::Stage::BUFFER2 };
 
 std::vector<std::string> stage_names()
 {
@@ -108,7 +109,7 @@ int run(const Options& opt)
                 << " polygon vertices in " << seconds["curves"].get<double>() << " s\n";
   }
 
-  QM::Stage last = QM::Stage::POINTS;
+  QM::Stage last = domain.is_point_cloud() ? QM::Stage::POINTS : QM::Stage::BUFFER2;
   for(QM::Stage s : all_stages)
     if(opt.stop_after == QM::stage_name(s))
       last = s;
@@ -158,7 +159,7 @@ int run(const Options& opt)
   report["input"]["merged_duplicate_points"] = mesher.number_of_merged_points();
   report["kernel"] = opt.kernel;
   report["curves"] = opt.curves;
-  report["stop_after"] = opt.stop_after;
+  report["stop_after"] = QM::stage_name(last);
   report["quads"] = quality.number_of_quads;
   report["vertices"] = quality.number_of_vertices;
   report["min_angle"] = quality.min_angle;
@@ -185,6 +186,17 @@ int run(const Options& opt)
                                     { "crossing_boundary", removed[1] },
                                     { "near_boundary", removed[2] },
                                     { "single_or_pinched", removed[3] } };
+  }
+  if(last >= QM::Stage::TEMPLATES) {
+    const auto& b = mesher.buffer_report();
+    report["buffer"] = { { "refinement_rounds", mesher.rounds() - 1 },
+                         { "notches_moved", b.moved_notches },
+                         { "first_layer_quads", b.first_layer_quads },
+                         { "second_layer_quads", b.second_layer_quads },
+                         { "quads_outside_45_135_not_forced", b.bad_angle_quads } };
+    if(b.bad_angle_quads > 0)
+      std::cerr << "quad-mesher: " << opt.input << ": warning: " << b.bad_angle_quads
+                << " buffer quads have an angle outside [45, 135] that no input corner forces\n";
   }
   report["points_as_vertices"] = mesher.point_vertices().size();
   report["max_aspect_ratio_at_points"] = QM::max_aspect_ratio_around(mesh, mesher.point_vertices());
@@ -239,9 +251,11 @@ int main(int argc, char** argv)
   app.add_option("--stop-after", opt.stop_after,
                  "last pipeline stage to run: 'quadtree' writes the strongly balanced, templated "
                  "quadtree mesh of the input's bounding grid (paper Fig. 3(b)); 'points' (the "
-                 "default) also moves a vertex onto every point of a point cloud, or every "
+                 "default for point clouds) also moves a vertex onto every point of a point cloud, or every "
                  "isolated point of a domain (paper §3, Lemma 1); 'clearance' (domains only) "
-                 "keeps the core mesh clear of the boundary (paper §4.3, Fig. 3(c))")
+                 "keeps the core mesh clear of the boundary (paper §4.3, Fig. 3(c)); 'templates' opens the "
+                 "core's notches (§4.4); 'buffer1' adds the first buffer layer (§4.5); 'buffer2' "
+                 "(the default for domains) the second, reaching the boundary (§4.6)")
     ->check(CLI::IsMember(stage_names()));
   app.add_flag("--merge-duplicates", opt.merge_duplicates,
                "in a point file (.node, x y), merge points given twice and report how many, "

@@ -13,6 +13,7 @@
 #include <CGAL/Quad_mesher_2/Quad_mesh_2.h>
 #include <CGAL/Quad_mesher_2/internal/apply_templates.h>
 #include <CGAL/Quad_mesher_2/internal/boundary_sizing.h>
+#include <CGAL/Quad_mesher_2/internal/buffer_layers.h>
 #include <CGAL/Quad_mesher_2/internal/buffer_zone_clearance.h>
 #include <CGAL/Quad_mesher_2/internal/insert_points.h>
 #include <CGAL/Quad_mesher_2/internal/nearest_neighbor_distances.h>
@@ -37,8 +38,13 @@ enum class Stage
   QUADTREE, ///< strongly balanced adaptive quadtree with 2-refinement templates (paper Fig. 3(b))
   POINTS,   ///< every input point of a point cloud, or isolated point of a domain, moved onto a
             ///< mesh vertex (paper §3, Lemma 1)
-  CLEARANCE ///< domains only: quads outside, crossing or too near the boundary removed, leaving
-            ///< the core mesh and an empty buffer zone (paper §4.3, Fig. 3(c))
+  CLEARANCE, ///< domains only: quads outside, crossing or too near the boundary removed, leaving
+             ///< the core mesh and an empty buffer zone (paper §4.3, Fig. 3(c))
+  TEMPLATES, ///< domains only: notches of the core boundary opened so that every boundary angle
+             ///< is at least 112.5° where the core allows (paper §4.4)
+  BUFFER1,   ///< domains only: the first buffer layer, on angle bisectors (paper §4.5)
+  BUFFER2    ///< domains only: the second buffer layer, reaching the boundary; the whole domain
+             ///< is meshed and every boundary vertex is a mesh vertex (paper §4.6)
 };
 
 /// \ingroup PkgQuadMesher2Ref
@@ -49,6 +55,9 @@ inline const char* stage_name(Stage s)
   case Stage::QUADTREE: return "quadtree";
   case Stage::POINTS: return "points";
   case Stage::CLEARANCE: return "clearance";
+  case Stage::TEMPLATES: return "templates";
+  case Stage::BUFFER1: return "buffer1";
+  case Stage::BUFFER2: return "buffer2";
   }
   return "?";
 }
@@ -97,6 +106,7 @@ public:
       refine_to_sizing_field();
     if(!m_domain.is_point_cloud() && m_criteria.resolve_narrow_regions())
       refine_narrow_regions();
+    refine_at_requests();
     record("refine", start);
     start = std::chrono::steady_clock::now();
     if(m_criteria.points_as_vertices()) {
@@ -166,6 +176,12 @@ public:
     for(std::size_t q = 0; q < quad_size.size(); ++q)
       quad_size[q] = m_tree->cell_side(m_quad_cells[q].level);
     auto result = internal::clear_buffer_zone(mesh, quad_size, m_domain, m_loops, m_traits);
+    m_core_vertex_size.assign(result.core.points.size(), 0.0);
+    for(std::size_t q = 0; q < result.core.quads.size(); ++q)
+      for(int c = 0; c < 4; ++c) {
+        double& s = m_core_vertex_size[result.core.quads[q][c]];
+        s = (std::max)(s, quad_size[result.core_to_input_quad[q]]);
+      }
     m_removed = { result.removed_outside, result.removed_intersecting, result.removed_near,
                   result.removed_single };
     // the point vertices survive: isolated points lie farther inside than any removed quad
@@ -179,17 +195,80 @@ public:
     record("clearance", start);
   }
 
-  /// Runs the stages up to `last` and returns the mesh.
+  /// Stages 4 to 6 (domains only, paper §4.4-§4.6) on `mesh`, the result of
+  /// `clear_buffer_zone()`, up to `last`: opens the core's notches, then adds the first buffer
+  /// layer and the second, which reaches the boundary. Returns `false` if the quadtree should
+  /// be finer somewhere (see `refinement_requests()`): a buffer quad would be invalid, or have
+  /// an angle outside [45°, 135°] that no input corner forces.
+  bool fill_buffer_zone(Mesh& mesh, Stage last = Stage::BUFFER2)
+  {
+    CGAL_precondition(m_tree != nullptr && !m_domain.is_point_cloud());
+    auto start = std::chrono::steady_clock::now();
+    internal::Buffer_layers<GeomTraits> layers(mesh, m_core_vertex_size, m_domain, m_loops, m_traits);
+    layers.begin();
+    bool ok = layers.match_loops();
+    if(ok && last >= Stage::TEMPLATES)
+      layers.relax_notches();
+    if(ok && last >= Stage::BUFFER1)
+      layers.build_first_layer();
+    if(ok && last >= Stage::BUFFER2)
+      layers.build_second_layer();
+    ok = ok && layers.report().failure.empty();
+    if(ok && last >= Stage::BUFFER2)
+      layers.optimize();
+    if(ok)
+      layers.check_new_quads(0);
+    m_buffer_report = layers.report();
+    record("buffer", start);
+    return ok && m_buffer_report.invalid_quads == 0 && m_buffer_report.bad_angle_quads == 0;
+  }
+
+  /// Runs the stages up to `last` and returns the mesh. Beyond the clearance, where the buffer
+  /// layers would have invalid quads the quadtree is refined there and the stages run again,
+  /// at most `max_refinement_rounds` times; a mesh with invalid quads is never returned.
   Mesh run(Stage last = Stage::POINTS)
   {
-    build_quadtree();
-    Mesh mesh = core_mesh();
-    if(last >= Stage::POINTS && m_criteria.points_as_vertices())
-      insert_points(mesh);
-    if(last >= Stage::CLEARANCE)
-      clear_buffer_zone(mesh);
-    return mesh;
+    m_extra_refinement.clear();
+    for(m_rounds = 1;; ++m_rounds) {
+      build_quadtree();
+      Mesh mesh = core_mesh();
+      if(last >= Stage::POINTS && m_criteria.points_as_vertices())
+        insert_points(mesh);
+      if(last >= Stage::CLEARANCE)
+        clear_buffer_zone(mesh);
+      if(last <= Stage::CLEARANCE || fill_buffer_zone(mesh, last))
+        return mesh;
+      const auto& requests = m_buffer_report.refine_requests;
+      const bool valid = m_buffer_report.failure.empty() && m_buffer_report.invalid_quads == 0;
+      std::size_t added = 0;
+      for(const auto& r : requests) {
+        const double size = r.second > 0 ? r.second / 2 : 0;
+        if(size > 0 && level_for_size(size) > m_tree->max_depth()) continue;
+        m_extra_refinement.push_back(r);
+        ++added;
+      }
+      if(valid)
+        return mesh; // angles outside [45, 135] stay; the quality report shows them
+      if(m_rounds < max_refinement_rounds && added > 0)
+        continue;
+      std::ostringstream msg;
+      msg << "the buffer layers could not be built";
+      if(!m_buffer_report.failure.empty())
+        msg << ": " << m_buffer_report.failure;
+      else
+        msg << ": " << m_buffer_report.invalid_quads << " buffer quads are not convex";
+      if(!requests.empty())
+        msg << ", near (" << requests.front().first.x << ", " << requests.front().first.y << ")";
+      msg << ", after " << m_rounds << " refinement rounds";
+      throw Meshing_error(msg.str());
+    }
   }
+
+  /// how many times `run()` built the quadtree (1 + refinement rounds for the buffer layers)
+  int rounds() const { return m_rounds; }
+  /// what the buffer stages did in the last round
+  const internal::Buffer_report& buffer_report() const { return m_buffer_report; }
+  static constexpr int max_refinement_rounds = 8;
 
   /// quads removed by the clearance: outside, crossing the boundary, near it, single
   const std::array<std::size_t, 4>& removed_by_clearance() const { return m_removed; }
@@ -379,6 +458,19 @@ private:
     }
   }
 
+  // where earlier rounds found the buffer layers poor: one level finer than it was there
+  void refine_at_requests()
+  {
+    auto make_point = m_traits.construct_point_2_object();
+    for(const auto& r : m_extra_refinement) {
+      const Point_2 p = make_point(r.first.x, r.first.y);
+      if(!m_tree->contains(p)) continue;
+      const int level = r.second > 0 ? level_for_size(r.second / 2)
+                                     : m_tree->locate(p).level + 1;
+      if(level <= m_tree->max_depth()) m_tree->refine_at(p, level);
+    }
+  }
+
   void refine_to_sizing_field()
   {
     const auto& field = m_criteria.sizing_field();
@@ -416,6 +508,10 @@ private:
   std::vector<Point_2> m_anchored_points;       // the points insert_points() makes vertices
   std::array<std::size_t, 4> m_removed{ { 0, 0, 0, 0 } };
   std::vector<std::size_t> m_point_vertices;
+  std::vector<double> m_core_vertex_size;       // largest cell side at each core vertex
+  std::vector<std::pair<internal::Point_2d, double>> m_extra_refinement; // (point, local size)
+  internal::Buffer_report m_buffer_report;
+  int m_rounds = 0;
   Timings m_timings;
 };
 

@@ -161,7 +161,7 @@ std::vector<Size_sample> narrow_region_samples(const Domain_2<K>& domain, const 
     const double w = finder.gap(q, on, arc, reach_factor * finder.segments()[on].length, r);
     if(!std::isfinite(w))
       return w;
-    const double size = w / 3;
+    const double size = w / 4;
     samples.push_back({ q, size });
     samples.push_back({ r, size });
     samples.push_back({ P{ { (q[0] + r[0]) / 2, (q[1] + r[1]) / 2 } }, size });

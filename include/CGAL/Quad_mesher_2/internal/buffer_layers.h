@@ -1,0 +1,1322 @@
+// Copyright (c) 2026 Quad_mesher_2 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Quad_mesher_2 developers
+
+#ifndef CGAL_QUAD_MESHER_2_INTERNAL_BUFFER_LAYERS_H
+#define CGAL_QUAD_MESHER_2_INTERNAL_BUFFER_LAYERS_H
+
+// Filling the buffer zone between the core mesh and the domain boundary (paper §4.4-§4.6).
+//
+// Input: the core mesh left by the clearance (every core vertex has 0 or 2 boundary edges, so
+// the core boundary is simple loops B_0..B_{n-1}, core on the left), with the local size h(B)
+// of every vertex (the largest side of its quadtree cells).
+//
+// 1. Core loops are matched one to one with the domain's loops (each core loop to the loop
+//    nearest most of its vertices; the orientation must agree).
+// 2. Boundary templates (§4.4): a core boundary vertex B whose buffer-side angle beta is below
+//    112.5° (45° or 90° on the quadtree lattice: a notch of the core) is moved along the bisector
+//    of beta into the buffer by 0.71, 0.5 or 0.35 h(B) -- the first that keeps every core angle
+//    at B in [45°, 135°], raises the smallest buffer-side angle at B and its two neighbours and
+//    keeps B and its boundary edges at least h(B)/4 from the boundary. On a uniform staircase
+//    the moved notches fall on the line through the convex corners: every beta becomes 180°.
+// 3. First buffer layer (§4.5): B's first buffer point F lies on the bisector of beta, halfway
+//    (in distance to the boundary) between B and the boundary. Quads B_i F_i F_{i+1} B_{i+1}.
+// 4. Second buffer layer (§4.6): F_i is projected onto its boundary loop; the projections,
+//    together with every vertex of the loop, form the boundary chain G. The strip between the
+//    F loop and G is cut into triangles, each with one F edge or one G edge, and consecutive
+//    triangles are paired into quads: F/G pairs are the paper's projection quads, G/G pairs
+//    fan around an F point (the paper's corner quad P-N-M-L of Fig. 8(b)), F/G pairs around a
+//    reflex corner fan at the corner (Fig. 8(d)). Where the F edges meet the G edges and how the
+//    triangles pair is chosen by dynamic programming around each loop, minimising the largest
+//    deviation of an angle from 90° (invalid quads cost more than any valid one). An odd
+//    triangle count is made even by splitting the longest boundary edge.
+//
+// Every new quad is then checked with exact predicates (strictly convex, counter-clockwise).
+// Quads that are invalid, or have an angle outside [45°, 135°] that no input corner forces, are
+// reported as refinement requests: the mesher refines the quadtree there and starts again.
+
+#include <CGAL/Quad_mesher_2/Domain_2.h>
+#include <CGAL/Quad_mesher_2/Domain_loops_2.h>
+#include <CGAL/Quad_mesher_2/Quad_mesh_2.h>
+#include <CGAL/Quad_mesher_2/internal/quad_geometry.h>
+
+#include <CGAL/Bbox_2.h>
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <map>
+#include <set>
+#include <utility>
+#include <vector>
+#include <iostream>
+#include <cstdlib>
+
+namespace CGAL {
+namespace Quad_mesher_2 {
+namespace internal {
+
+/// the oriented boundary loops of a quad mesh whose boundary vertices all have two boundary
+/// edges (the core after the clearance): each loop has the mesh on its left
+inline std::vector<std::vector<std::size_t>>
+mesh_boundary_cycles(const std::vector<std::array<std::size_t, 4>>& quads, std::size_t n_points)
+{
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> edges; // (undirected key, directed code)
+  edges.reserve(4 * quads.size());
+  for(const auto& q : quads)
+    for(int e = 0; e < 4; ++e) {
+      std::uint64_t a = q[e], b = q[(e + 1) % 4];
+      edges.emplace_back((std::min(a, b) << 32) | std::max(a, b), a < b ? 0u : 1u);
+    }
+  std::sort(edges.begin(), edges.end());
+  std::vector<std::size_t> next(n_points, std::size_t(-1));
+  for(std::size_t k = 0; k < edges.size();) {
+    std::size_t e = k;
+    while(e < edges.size() && edges[e].first == edges[k].first) ++e;
+    if(e - k == 1) {
+      std::size_t lo = std::size_t(edges[k].first >> 32), hi = std::size_t(edges[k].first & 0xffffffffu);
+      if(edges[k].second == 0) next[lo] = hi; else next[hi] = lo;
+    }
+    k = e;
+  }
+  std::vector<std::vector<std::size_t>> cycles;
+  std::vector<bool> seen(n_points, false);
+  for(std::size_t v = 0; v < n_points; ++v) {
+    if(next[v] == std::size_t(-1) || seen[v]) continue;
+    std::vector<std::size_t> c;
+    for(std::size_t u = v; !seen[u]; u = next[u]) {
+      seen[u] = true;
+      c.push_back(u);
+      if(next[u] == std::size_t(-1)) break;
+    }
+    cycles.push_back(std::move(c));
+  }
+  return cycles;
+}
+
+/// Closest points on the domain's loops, in doubles (search only; new points on the boundary
+/// are then constructed from a segment's end points in the kernel).
+class Loop_locator
+{
+public:
+  struct Hit
+  {
+    std::size_t loop = 0, edge = 0; // edge k joins loop vertex k to k+1
+    double t = 0, dist = std::numeric_limits<double>::infinity();
+    Point_2d point{0, 0};
+  };
+
+  Loop_locator(std::vector<std::vector<Point_2d>> loops) : m_loops(std::move(loops))
+  {
+    std::vector<Bbox_2>& boxes = m_boxes; // the box tree keeps a reference
+    double xmin = HUGE_VAL, xmax = -HUGE_VAL, ymin = HUGE_VAL, ymax = -HUGE_VAL;
+    m_arc.resize(m_loops.size());
+    for(std::size_t l = 0; l < m_loops.size(); ++l) {
+      const auto& v = m_loops[l];
+      m_arc[l].assign(v.size() + 1, 0.0);
+      for(std::size_t k = 0; k < v.size(); ++k) {
+        const Point_2d& a = v[k];
+        const Point_2d& b = v[(k + 1) % v.size()];
+        boxes.emplace_back((std::min)(a.x, b.x), (std::min)(a.y, b.y), (std::max)(a.x, b.x),
+                           (std::max)(a.y, b.y));
+        m_edge_of.push_back({l, k});
+        m_arc[l][k + 1] = m_arc[l][k] + length_2d(minus_2d(b, a));
+        xmin = (std::min)(xmin, a.x); xmax = (std::max)(xmax, a.x);
+        ymin = (std::min)(ymin, a.y); ymax = (std::max)(ymax, a.y);
+      }
+    }
+    m_diag = std::hypot(xmax - xmin, ymax - ymin);
+    m_tree = std::make_unique<Loops_box_tree>(boxes);
+  }
+
+  const std::vector<Point_2d>& loop(std::size_t l) const { return m_loops[l]; }
+  std::size_t number_of_loops() const { return m_loops.size(); }
+  /// arclength from loop vertex 0 to vertex k (k = size: the loop's length)
+  double arc(std::size_t l, std::size_t k) const { return m_arc[l][k]; }
+  double length(std::size_t l) const { return m_arc[l].back(); }
+  double diagonal() const { return m_diag; }
+  double param(const Hit& h) const
+  {
+    return m_arc[h.loop][h.edge] + h.t * (m_arc[h.loop][h.edge + 1] - m_arc[h.loop][h.edge]);
+  }
+
+  /// the closest point to `p` on loop `l` (any loop if `l` is none), searching first within
+  /// `radius` of `p`
+  Hit closest(const Point_2d& p, double radius, std::size_t l = none) const
+  {
+    Hit best;
+    double r = (std::max)(radius, 1e-300);
+    for(;;) {
+      m_tree->query(Bbox_2(p.x - r, p.y - r, p.x + r, p.y + r), [&](std::size_t s) {
+        if(l != none && m_edge_of[s][0] != l) return;
+        Hit h = on_edge(p, m_edge_of[s][0], m_edge_of[s][1]);
+        if(h.dist < best.dist) best = h;
+      });
+      if(best.dist <= r || r > 4 * m_diag + 1e-300) return best;
+      r *= 4;
+    }
+  }
+
+  /// the distance from segment (a, b) to the nearest loop edge, if below `radius` (else
+  /// `radius` or more)
+  double segment_distance(const Point_2d& a, const Point_2d& b, double radius) const
+  {
+    double best = HUGE_VAL;
+    const double r = radius;
+    Bbox_2 box((std::min)(a.x, b.x) - r, (std::min)(a.y, b.y) - r, (std::max)(a.x, b.x) + r,
+               (std::max)(a.y, b.y) + r);
+    m_tree->query(box, [&](std::size_t s) {
+      const auto& v = m_loops[m_edge_of[s][0]];
+      const std::size_t k = m_edge_of[s][1];
+      best = (std::min)(best, segment_segment_distance(a, b, v[k], v[(k + 1) % v.size()]));
+    });
+    return best;
+  }
+
+  static constexpr std::size_t none = std::size_t(-1);
+
+private:
+  Hit on_edge(const Point_2d& p, std::size_t l, std::size_t k) const
+  {
+    const auto& v = m_loops[l];
+    const Point_2d& a = v[k];
+    const Point_2d& b = v[(k + 1) % v.size()];
+    const Point_2d ab = minus_2d(b, a);
+    const double len2 = dot_2d(ab, ab);
+    double t = len2 > 0 ? dot_2d(minus_2d(p, a), ab) / len2 : 0.0;
+    t = (std::min)(1.0, (std::max)(0.0, t));
+    Hit h;
+    h.loop = l;
+    h.edge = k;
+    h.t = t;
+    h.point = Point_2d{a.x + t * ab.x, a.y + t * ab.y};
+    h.dist = length_2d(minus_2d(p, h.point));
+    return h;
+  }
+
+  static double point_segment_distance(const Point_2d& p, const Point_2d& a, const Point_2d& b)
+  {
+    const Point_2d ab = minus_2d(b, a);
+    const double len2 = dot_2d(ab, ab);
+    double t = len2 > 0 ? dot_2d(minus_2d(p, a), ab) / len2 : 0.0;
+    t = (std::min)(1.0, (std::max)(0.0, t));
+    return length_2d(minus_2d(p, Point_2d{a.x + t * ab.x, a.y + t * ab.y}));
+  }
+
+  static double segment_segment_distance(const Point_2d& a, const Point_2d& b, const Point_2d& c,
+                                         const Point_2d& d)
+  {
+    const double o1 = cross_2d(minus_2d(b, a), minus_2d(c, a)), o2 = cross_2d(minus_2d(b, a), minus_2d(d, a));
+    const double o3 = cross_2d(minus_2d(d, c), minus_2d(a, c)), o4 = cross_2d(minus_2d(d, c), minus_2d(b, c));
+    if(((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0)))
+      return 0;
+    return (std::min)((std::min)(point_segment_distance(a, c, d), point_segment_distance(b, c, d)),
+                      (std::min)(point_segment_distance(c, a, b), point_segment_distance(d, a, b)));
+  }
+
+  std::vector<std::vector<Point_2d>> m_loops;
+  std::vector<std::array<std::size_t, 2>> m_edge_of;
+  std::vector<std::vector<double>> m_arc;
+  std::vector<Bbox_2> m_boxes;
+  std::unique_ptr<Loops_box_tree> m_tree;
+  double m_diag = 0;
+};
+
+/// the angle (degrees, in [0, 360)) on the right of the path a -> b -> c, at b
+inline double right_side_angle(const Point_2d& a, const Point_2d& b, const Point_2d& c)
+{
+  const Point_2d t1 = minus_2d(b, a), t2 = minus_2d(c, b);
+  const double turn = std::atan2(cross_2d(t1, t2), dot_2d(t1, t2)) * 180.0 / 3.14159265358979323846;
+  return 180.0 + turn;
+}
+
+inline Point_2d normalized_2d(const Point_2d& v)
+{
+  const double l = length_2d(v);
+  return l > 0 ? Point_2d{v.x / l, v.y / l} : Point_2d{0, 0};
+}
+
+/// the unit bisector of the angle on the right of a -> b -> c
+inline Point_2d right_bisector(const Point_2d& a, const Point_2d& b, const Point_2d& c)
+{
+  const Point_2d t1 = normalized_2d(minus_2d(b, a)), t2 = normalized_2d(minus_2d(c, b));
+  Point_2d s{t1.x + t2.x, t1.y + t2.y};
+  if(length_2d(s) < 1e-9) // a spike: the bisector points back along the incoming edge
+    return Point_2d{-t1.x, -t1.y};
+  return normalized_2d(Point_2d{s.y, -s.x});
+}
+
+/// largest deviation of a quad's angles from 90 degrees; a large penalty if it is not strictly
+/// convex and counter-clockwise
+inline double quad_badness(const std::array<Point_2d, 4>& q)
+{
+  double worst = 0;
+  for(int c = 0; c < 4; ++c) {
+    const Point_2d& p = q[(c + 3) % 4];
+    const Point_2d& v = q[c];
+    const Point_2d& n = q[(c + 1) % 4];
+    const double cr = cross_2d(minus_2d(v, p), minus_2d(n, v));
+    const Point_2d e1 = minus_2d(n, v), e2 = minus_2d(p, v);
+    const double l1 = length_2d(e1), l2 = length_2d(e2);
+    if(!(cr > 1e-6 * l1 * l2) || l1 == 0 || l2 == 0) // flat corners count as invalid
+      return 1000.0 + (cr < 0 ? 100.0 : 0.0);
+    worst = (std::max)(worst, std::abs(corner_angle_degrees(p, v, n) - 90.0));
+  }
+  return worst;
+}
+
+/// what the buffer construction did, and where the quadtree should be finer
+struct Buffer_report
+{
+  std::size_t moved_notches = 0;
+  std::size_t first_layer_quads = 0;
+  std::size_t second_layer_quads = 0;
+  std::size_t fans = 0;
+  std::size_t invalid_quads = 0;
+  std::size_t bad_angle_quads = 0;
+  /// points (with the local size there) where a finer quadtree would help
+  std::vector<std::pair<Point_2d, double>> refine_requests;
+  /// a message when the buffer could not be built (core loops not matching the domain's)
+  std::string failure;
+};
+
+/// The buffer stages on a core mesh. The mesh's points are the core's; `local_size[v]` the
+/// side of the largest quadtree cell at core vertex `v`.
+template <class K>
+class Buffer_layers
+{
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 Point_2;
+  typedef Quad_mesh_2<Point_2> Mesh;
+  typedef std::array<std::size_t, 4> Quad;
+
+public:
+  Buffer_layers(Mesh& mesh, const std::vector<double>& local_size, const Domain_2<K>& domain,
+                const Domain_loops_2<K>& loops, const K& traits)
+    : m_mesh(mesh), m_size(local_size), m_domain(domain), m_loops(loops), m_traits(traits)
+  {
+    std::vector<std::vector<Point_2d>> pts(loops.loops.size());
+    for(std::size_t l = 0; l < loops.loops.size(); ++l)
+      for(std::size_t v : loops.loops[l].vertices)
+        pts[l].push_back(to_point_2d(domain.points[v]));
+    m_locator = std::make_unique<Loop_locator>(std::move(pts));
+    m_chord_tolerance = 1e-3 * m_locator->diagonal();
+    m_xy.resize(mesh.points.size());
+    for(std::size_t v = 0; v < mesh.points.size(); ++v)
+      m_xy[v] = to_point_2d(mesh.points[v]);
+  }
+
+  const Buffer_report& report() const { return m_report; }
+
+  /// Matches the core's boundary loops with the domain's; false (with `report().failure` and
+  /// refinement requests) if they do not match one to one.
+  bool match_loops()
+  {
+    m_cycles = mesh_boundary_cycles(m_mesh.quads, m_mesh.points.size());
+    m_cycle_loop.assign(m_cycles.size(), none);
+    std::vector<std::size_t> owner(m_loops.loops.size(), none);
+    bool ok = true;
+    for(std::size_t c = 0; c < m_cycles.size(); ++c) {
+      std::vector<std::size_t> votes(m_loops.loops.size(), 0);
+      for(std::size_t v : m_cycles[c])
+        ++votes[m_locator->closest(m_xy[v], 2 * m_size[v]).loop];
+      const std::size_t l = std::size_t(std::max_element(votes.begin(), votes.end()) - votes.begin());
+      const bool same_turn = (cycle_area(c) > 0) == m_loops.loops[l].is_outer;
+      if(owner[l] != none || !same_turn || 2 * votes[l] <= m_cycles[c].size()) {
+        ok = false;
+        request_all(c);
+        if(owner[l] != none) request_all(owner[l]);
+        m_report.failure = "the core mesh's boundary does not follow the domain's loops one to one";
+        continue;
+      }
+      owner[l] = c;
+      m_cycle_loop[c] = l;
+      m_on_cycle.insert(m_cycles[c].begin(), m_cycles[c].end());
+    }
+    for(std::size_t l = 0; l < owner.size(); ++l)
+      if(owner[l] == none) {
+        ok = false;
+        m_report.failure = "no core mesh is left near loop " + std::to_string(l)
+                           + " of the domain: its cells are too coarse";
+        for(const Point_2d& p : m_locator->loop(l))
+          m_report.refine_requests.emplace_back(p, 0.0);
+      }
+    return ok;
+  }
+
+  /// Stage "templates": moves the core's notch vertices into the buffer (see the file comment).
+  void relax_notches()
+  {
+    std::vector<std::vector<std::size_t>> quads_at(m_mesh.points.size());
+    for(std::size_t q = 0; q < m_mesh.quads.size(); ++q)
+      for(int c = 0; c < 4; ++c)
+        quads_at[m_mesh.quads[q][c]].push_back(q);
+    for(int pass = 0; pass < 3; ++pass) {
+      bool changed = false;
+      for(const auto& cyc : m_cycles) {
+        const std::size_t n = cyc.size();
+        for(std::size_t i = 0; i < n; ++i)
+          if(try_move_notch(cyc[(i + n - 2) % n], cyc[(i + n - 1) % n], cyc[i], cyc[(i + 1) % n],
+                            cyc[(i + 2) % n], quads_at))
+            changed = true;
+      }
+      if(!changed) break;
+    }
+  }
+
+  /// Stage "buffer1": the first buffer points and the quads B_i F_i F_{i+1} B_{i+1}.
+  void build_first_layer()
+  {
+    m_first.assign(m_cycles.size(), {});
+    for(std::size_t c = 0; c < m_cycles.size(); ++c) {
+      const auto& cyc = m_cycles[c];
+      const std::size_t n = cyc.size(), l = m_cycle_loop[c];
+      auto& F = m_first[c];
+      F.resize(n);
+      for(std::size_t i = 0; i < n; ++i) {
+        const Point_2d& a = m_xy[cyc[(i + n - 1) % n]];
+        const Point_2d& b = m_xy[cyc[i]];
+        const Point_2d& nb = m_xy[cyc[(i + 1) % n]];
+        const Loop_locator::Hit h = m_locator->closest(b, 2 * m_size[cyc[i]], l);
+        const Point_2d toward = normalized_2d(minus_2d(h.point, b));
+        const double w = std::getenv("QM2_W") ? std::atof(std::getenv("QM2_W")) : 0.5;
+        const Point_2d bis = right_bisector(a, b, nb);
+        const Point_2d d = normalized_2d(Point_2d{w * bis.x + (1 - w) * toward.x, w * bis.y + (1 - w) * toward.y});
+        const double c_dn = (std::max)(dot_2d(d, toward), 0.5);
+        const double lambda = 0.5 * h.dist / c_dn;
+        F[i] = Point_2d{b.x + lambda * d.x, b.y + lambda * d.y};
+      }
+      const std::size_t base = m_mesh.points.size();
+      for(std::size_t i = 0; i < n; ++i) {
+        add_point(F[i]);
+        m_f_core.push_back(cyc[i]);
+      }
+      for(std::size_t i = 0; i < n; ++i) {
+        const std::size_t j = (i + 1) % n;
+        add_quad({cyc[i], base + i, base + j, cyc[j]});
+      }
+      m_first_base.push_back(base);
+      m_first_built = true;
+      m_report.first_layer_quads += n;
+    }
+  }
+
+  /// Stage "buffer2": the strip between the first buffer points and the boundary.
+  void build_second_layer()
+  {
+    for(std::size_t c = 0; c < m_cycles.size(); ++c)
+      build_strip(c);
+  }
+
+  /// Checks every new quad (those from index `first_new`) with exact predicates; records
+  /// refinement requests at the invalid ones and at those with an angle outside [45, 135]
+  /// that no sharp input corner forces.
+  void check_new_quads(std::size_t first_new)
+  {
+    auto orient = m_traits.orientation_2_object();
+    for(std::size_t q = first_new; q < m_mesh.quads.size(); ++q) {
+      const Quad& Q = m_mesh.quads[q];
+      bool valid = true;
+      for(int c = 0; c < 4 && valid; ++c)
+        valid = orient(m_mesh.points[Q[c]], m_mesh.points[Q[(c + 1) % 4]], m_mesh.points[Q[(c + 2) % 4]])
+                == CGAL::LEFT_TURN;
+      std::array<Point_2d, 4> P;
+      for(int c = 0; c < 4; ++c) P[c] = m_xy[Q[c]];
+      // nearly flat corners count as invalid too: the quality check rejects them
+      for(int c = 0; c < 4 && valid; ++c)
+        valid = corner_scaled_jacobian(P[(c + 3) % 4], P[c], P[(c + 1) % 4]) > 1e-9;
+      bool bad_angle = false;
+      if(valid)
+        for(int c = 0; c < 4; ++c) {
+          const double a = corner_angle_degrees(P[(c + 3) % 4], P[c], P[(c + 1) % 4]);
+          if((a < 45.0 - 1e-9 || a > 135.0 + 1e-9) && !forced_corner(Q[c]))
+            bad_angle = true;
+        }
+      if(!valid) ++m_report.invalid_quads;
+      if(bad_angle) ++m_report.bad_angle_quads;
+      if(!valid) {
+        for(int c = 0; c < 4; ++c)
+          if(Q[c] < m_core_points)
+            m_report.refine_requests.emplace_back(m_xy[Q[c]], m_size[Q[c]]);
+        for(int c = 0; c < 4; ++c)
+          if(Q[c] >= m_core_points && Q[c] - m_core_points < m_f_core.size()) {
+            const std::size_t b = m_f_core[Q[c] - m_core_points];
+            m_report.refine_requests.emplace_back(m_xy[b], m_size[b]);
+          }
+      }
+    }
+  }
+
+  void begin() { m_core_points = m_mesh.points.size(); }
+
+  /// Local min-max angle optimisation of the buffer: the first buffer points move freely, the
+  /// new boundary points slide along their input edge, the core's boundary vertices move too;
+  /// a move is kept only if it lowers the largest deviation from 90° of the quads around the
+  /// vertex and keeps them convex and unfolded. Input vertices never move.
+  void optimize(int passes = std::getenv("QM2_P") ? std::atoi(std::getenv("QM2_P")) : 12)
+  {
+    std::vector<std::vector<std::size_t>> quads_at(m_mesh.points.size());
+    for(std::size_t q = 0; q < m_mesh.quads.size(); ++q)
+      for(int c = 0; c < 4; ++c)
+        quads_at[m_mesh.quads[q][c]].push_back(q);
+    std::vector<std::size_t> movable;
+    for(const auto& cyc : m_cycles)
+      movable.insert(movable.end(), cyc.begin(), cyc.end());
+    for(std::size_t v = m_core_points; v < m_mesh.points.size(); ++v)
+      if(m_input_vertex_ids.count(v) == 0)
+        movable.push_back(v);
+    // (quads outside [45, 135] around v, their worst deviation from 90)
+    auto local_cost = [&](std::size_t v) {
+      double worst = 0, angle_sum = 0;
+      int out = 0;
+      for(std::size_t q : quads_at[v]) {
+        const double b = cost(m_mesh.quads[q]);
+        worst = (std::max)(worst, b);
+        if(b > 45.0 + 1e-9) ++out;
+        const Quad& Q = m_mesh.quads[q];
+        int c = 0;
+        while(Q[c] != v) ++c;
+        angle_sum += corner_angle_degrees(m_xy[Q[(c + 3) % 4]], m_xy[v], m_xy[Q[(c + 1) % 4]]);
+      }
+      const double expected = m_slide.count(v) ? 180.0 : (is_core_boundary(v, quads_at) ? -1 : 360.0);
+      if(expected > 0 && std::abs(angle_sum - expected) > 1e-6)
+        return std::make_pair(1 << 20, 3000.0);
+      return std::make_pair(out, worst);
+    };
+    for(int pass = 0; pass < passes; ++pass) {
+      bool improved = false;
+      for(std::size_t v : movable) {
+        const auto current = local_cost(v);
+        if(current.second <= 20.0) continue;
+        const Point_2d old = m_xy[v];
+        std::vector<Point_2d> targets;
+        Point_2d lap{0, 0};
+        int nl = 0;
+        for(std::size_t q : quads_at[v]) {
+          const Quad& Q = m_mesh.quads[q];
+          int c = 0;
+          while(Q[c] != v) ++c;
+          const Point_2d& prev = m_xy[Q[(c + 3) % 4]];
+          const Point_2d& next = m_xy[Q[(c + 1) % 4]];
+          const Point_2d& opp = m_xy[Q[(c + 2) % 4]];
+          targets.push_back(Point_2d{prev.x + next.x - opp.x, prev.y + next.y - opp.y});
+          lap.x += prev.x + next.x; lap.y += prev.y + next.y; nl += 2;
+        }
+        lap.x /= nl; lap.y /= nl;
+        targets.push_back(lap);
+        Point_2d mean{0, 0};
+        for(std::size_t k = 0; k + 1 < targets.size(); ++k) { mean.x += targets[k].x; mean.y += targets[k].y; }
+        mean.x /= double(targets.size() - 1); mean.y /= double(targets.size() - 1);
+        targets.push_back(mean);
+        auto best = current;
+        Point_2d best_p = old;
+        for(const Point_2d& t : targets)
+          for(double step : { 1.0, 0.5, 0.25, 0.1 }) {
+            Point_2d p{old.x + step * (t.x - old.x), old.y + step * (t.y - old.y)};
+            if(!slide_to(v, p)) continue;
+            m_xy[v] = p;
+            const auto c = local_cost(v);
+            m_xy[v] = old;
+            if(c.first < best.first || (c.first == best.first && c.second < best.second - 1e-9)) {
+              best = c;
+              best_p = p;
+            }
+          }
+        if(best_p.x != old.x || best_p.y != old.y) {
+          m_xy[v] = best_p;
+          improved = true;
+        }
+      }
+      if(!improved) break;
+    }
+    // positions back into the kernel: boundary points exactly on their edge
+    for(std::size_t v : movable) {
+      auto it = m_slide.find(v);
+      if(it == m_slide.end()) {
+        m_mesh.points[v] = m_traits.construct_point_2_object()(FT(m_xy[v].x), FT(m_xy[v].y));
+      } else {
+        const auto& lv = m_loops.loops[it->second.loop].vertices;
+        const Point_2& a = m_domain.points[lv[it->second.edge]];
+        const Point_2& b = m_domain.points[lv[(it->second.edge + 1) % lv.size()]];
+        const Point_2d A = to_point_2d(a), B = to_point_2d(b);
+        const Point_2d ab = minus_2d(B, A);
+        const double t = dot_2d(minus_2d(m_xy[v], A), ab) / dot_2d(ab, ab);
+        m_mesh.points[v] = point_between(a, b, t);
+        m_xy[v] = to_point_2d(m_mesh.points[v]);
+      }
+    }
+  }
+
+private:
+  static constexpr std::size_t none = std::size_t(-1);
+
+  // for a sliding boundary point, moves `p` onto its edge strictly between its neighbours;
+  // false if there is no room
+  bool slide_to(std::size_t v, Point_2d& p) const
+  {
+    auto it = m_slide.find(v);
+    if(it == m_slide.end()) return true;
+    const std::size_t a = it->second.neighbors[0], b = it->second.neighbors[1];
+    if(a == none || b == none) return false;
+    const Point_2d A = m_xy[a], B = m_xy[b];
+    const Point_2d ab = minus_2d(B, A);
+    const double len2 = dot_2d(ab, ab);
+    if(!(len2 > 0)) return false;
+    const double t = (std::min)(0.9, (std::max)(0.1, dot_2d(minus_2d(p, A), ab) / len2));
+    // the neighbours must lie on this point's edge (or be its ends) for the chain to stay on it
+    const auto& lv = m_loops.loops[it->second.loop].vertices;
+    const Point_2d E0 = to_point_2d(m_domain.points[lv[it->second.edge]]);
+    const Point_2d E1 = to_point_2d(m_domain.points[lv[(it->second.edge + 1) % lv.size()]]);
+    const Point_2d e = minus_2d(E1, E0);
+    const double el = length_2d(e);
+    if(std::abs(cross_2d(e, minus_2d(A, E0))) > 1e-9 * el * el || std::abs(cross_2d(e, minus_2d(B, E0))) > 1e-9 * el * el)
+      return false;
+    p = Point_2d{A.x + t * ab.x, A.y + t * ab.y};
+    return true;
+  }
+
+  bool is_core_boundary(std::size_t v, const std::vector<std::vector<std::size_t>>&) const
+  {
+    return v < m_core_points && m_on_cycle.count(v) != 0 && !m_first_built;
+  }
+
+  double cycle_area(std::size_t c) const
+  {
+    double a = 0;
+    const auto& cyc = m_cycles[c];
+    const Point_2d& o = m_xy[cyc[0]]; // relative to a vertex: far from the origin, absolute
+                                       // coordinates would cancel
+    for(std::size_t i = 0; i < cyc.size(); ++i)
+      a += cross_2d(minus_2d(m_xy[cyc[i]], o), minus_2d(m_xy[cyc[(i + 1) % cyc.size()]], o));
+    return a / 2;
+  }
+
+  void request_all(std::size_t c)
+  {
+    for(std::size_t v : m_cycles[c])
+      m_report.refine_requests.emplace_back(m_xy[v], m_size[v]);
+  }
+
+  std::size_t add_point(const Point_2d& p)
+  {
+    m_mesh.points.push_back(m_traits.construct_point_2_object()(FT(p.x), FT(p.y)));
+    m_xy.push_back(p);
+    return m_mesh.points.size() - 1;
+  }
+
+  void add_quad(const Quad& q) { m_mesh.quads.push_back(q); }
+
+  // true if a mesh vertex is an input corner sharper than 45 or more reflex than 270 degrees
+  bool forced_corner(std::size_t v) const
+  {
+    auto it = m_corner_angle.find(v);
+    return it != m_corner_angle.end() && (it->second < 45.0 || it->second > 270.0);
+  }
+
+  bool try_move_notch(std::size_t a2, std::size_t a, std::size_t b, std::size_t c, std::size_t c2,
+                      const std::vector<std::vector<std::size_t>>& quads_at)
+  {
+    const double beta = right_side_angle(m_xy[a], m_xy[b], m_xy[c]);
+    if(beta >= 112.5 - 1e-9)
+      return false;
+    const double h = m_size[b];
+    const Point_2d d = right_bisector(m_xy[a], m_xy[b], m_xy[c]);
+    const Point_2d old = m_xy[b];
+    const double old_min = (std::min)({ right_side_angle(m_xy[a2], m_xy[a], old), beta,
+                                        right_side_angle(old, m_xy[c], m_xy[c2]) });
+    for(double f : { 0.70710678118654752, 0.5, 0.35 }) {
+      const Point_2d p{old.x + f * h * d.x, old.y + f * h * d.y};
+      m_xy[b] = p;
+      bool ok = true;
+      for(std::size_t q : quads_at[b]) {
+        std::array<Point_2d, 4> P;
+        for(int k = 0; k < 4; ++k) P[k] = m_xy[m_mesh.quads[q][k]];
+        if(quad_badness(P) > 45.0 + 1e-9) { ok = false; break; }
+      }
+      if(ok) {
+        const double new_min = (std::min)({ right_side_angle(m_xy[a2], m_xy[a], p),
+                                            right_side_angle(m_xy[a], p, m_xy[c]),
+                                            right_side_angle(p, m_xy[c], m_xy[c2]) });
+        ok = new_min > old_min + 1e-9;
+      }
+      if(ok) {
+        const double clear = 0.25 * h;
+        ok = m_locator->segment_distance(m_xy[a], p, clear) > clear
+             && m_locator->segment_distance(p, m_xy[c], clear) > clear;
+      }
+      if(ok) {
+        m_mesh.points[b] = m_traits.construct_point_2_object()(FT(p.x), FT(p.y));
+        ++m_report.moved_notches;
+        return true;
+      }
+    }
+    m_xy[b] = old;
+    return false;
+  }
+
+  // Triangles of the strip, in order around the loop: an F edge with its apex on G, or a G
+  // edge with its apex an F point. Vertices are mesh ids, counter-clockwise.
+  typedef std::array<std::size_t, 3> Triangle;
+
+  // the quad made of two triangles sharing an edge (none if they share none)
+  static Quad merge(const Triangle& A, const Triangle& B)
+  {
+    for(int k = 0; k < 3; ++k) {
+      const std::size_t x = A[k], y = A[(k + 1) % 3];
+      for(int j = 0; j < 3; ++j)
+        if(B[j] == y && B[(j + 1) % 3] == x)
+          return Quad{ x, B[(j + 2) % 3], y, A[(k + 2) % 3] };
+    }
+    return Quad{ none, none, none, none };
+  }
+
+  double cost(const Quad& q) const
+  {
+    if(q[0] == none) return 2000.0;
+    std::array<Point_2d, 4> P;
+    for(int k = 0; k < 4; ++k) P[k] = m_xy[q[k]];
+    double b = quad_badness(P);
+    // an angle an input corner forces is not the strip's fault
+    if(b < 1000.0)
+      for(int k = 0; k < 4; ++k)
+        if(forced_corner(q[k])) {
+          b = 0;
+          for(int j = 0; j < 4; ++j)
+            if(j != k)
+              b = (std::max)(b, std::abs(corner_angle_degrees(P[(j + 3) % 4], P[j], P[(j + 1) % 4]) - 90.0));
+          break;
+        }
+    return b;
+  }
+
+  // The strip's cost: the sum over its quads of the squared deviation from 90 degrees, plus a
+  // heavy penalty beyond 45 (outside [45, 135]) and a prohibitive one for invalid quads. A sum,
+  // not the worst quad: one poor quad at a corner beats a whole row of sheared ones.
+  struct Cost
+  {
+    double worst = HUGE_VAL, sum = HUGE_VAL;
+    bool operator<(const Cost& o) const { return sum < o.sum || (sum == o.sum && worst < o.worst); }
+    void add(double b)
+    {
+      worst = (std::max)(worst, b);
+      const double excess = (std::max)(0.0, b - 45.0);
+      sum += b >= 1000.0 ? 1e12 : b * b + 100.0 * excess * excess;
+    }
+  };
+
+  // the strip of loop cycle c: see the file comment
+  void build_strip(std::size_t c)
+  {
+    const auto& cyc = m_cycles[c];
+    const std::size_t n = cyc.size(), l = m_cycle_loop[c];
+    const auto& F = m_first[c];
+    const auto& loop_xy = m_locator->loop(l);
+    const std::size_t nv = loop_xy.size();
+    const double L = m_locator->length(l);
+    auto cyclic = [&](double d) { d = std::fmod(d, L); if(d > L / 2) d -= L; if(d < -L / 2) d += L; return d; };
+
+    // projections of the first buffer points; those within a third of the layer's thickness
+    // of a loop vertex (along the loop) snap to it
+    std::vector<Loop_locator::Hit> hit(n);
+    std::vector<double> raw(n);
+    std::vector<std::size_t> snap(n, none);
+    for(std::size_t i = 0; i < n; ++i) {
+      hit[i] = m_locator->closest(F[i], 2 * m_size[cyc[i]], l);
+      raw[i] = m_locator->param(hit[i]);
+      const double reach = 0.35 * hit[i].dist;
+      double best = reach;
+      for(std::size_t k : { hit[i].edge, (hit[i].edge + 1) % nv }) {
+        const double d = std::abs(cyclic(m_locator->arc(l, k) - raw[i]));
+        if(d <= best) { best = d; snap[i] = k; }
+      }
+    }
+    // A corner wider than 135 degrees (obtuse or reflex) takes the node of the projection
+    // nearest to it: a fan of boundary edges around an F point there would be flat or
+    // concave at the corner (paper §5: such corners get a first buffer point of their own).
+    {
+      std::vector<std::size_t> by_param(n);
+      for(std::size_t i = 0; i < n; ++i) by_param[i] = i;
+      std::sort(by_param.begin(), by_param.end(), [&](std::size_t x, std::size_t y) { return raw[x] < raw[y]; });
+      std::vector<bool> vertex_taken(nv, false);
+      for(std::size_t i = 0; i < n; ++i) if(snap[i] != none) vertex_taken[snap[i]] = true;
+      for(std::size_t k = 0; k < nv; ++k) {
+        if(vertex_taken[k] || !is_feature(l, k)) continue;
+        const double interior = 360.0 - right_side_angle(loop_xy[(k + nv - 1) % nv], loop_xy[k], loop_xy[(k + 1) % nv]);
+        if(interior <= 135.0) continue;
+        const double a = m_locator->arc(l, k);
+        auto it = std::lower_bound(by_param.begin(), by_param.end(), a,
+                                   [&](std::size_t x, double v) { return raw[x] < v; });
+        std::size_t best = none;
+        double bd = HUGE_VAL;
+        for(int side = 0; side < 2; ++side) {
+          const std::size_t pos = std::size_t(((it - by_param.begin()) - side + std::ptrdiff_t(n)) % std::ptrdiff_t(n));
+          const std::size_t i = by_param[pos];
+          const double d = std::abs(cyclic(raw[i] - a));
+          if(snap[i] == none && d < bd) { bd = d; best = i; }
+        }
+        if(best != none) { snap[best] = k; vertex_taken[k] = true; }
+      }
+    }
+    std::size_t s0 = 0;
+    while(s0 < n && snap[s0] != none) ++s0;
+    if(s0 == n) { s0 = 0; snap[0] = none; }
+    auto rot = [&](std::size_t r) { return (s0 + r) % n; };
+
+    // unwrapped positions along the loop from O, the first projection; a step backwards would
+    // fold the strip, so such a point shares its predecessor's node instead
+    const double O = raw[s0];
+    std::vector<double> P(n), W(n);
+    std::vector<std::size_t> share(n, none);
+    W[0] = P[0] = O;
+    for(std::size_t r = 1; r < n; ++r) {
+      const std::size_t i = rot(r);
+      W[r] = W[r - 1] + cyclic(raw[i] - raw[rot(r - 1)]);
+      P[r] = snap[i] != none ? W[r] + cyclic(m_locator->arc(l, snap[i]) - raw[i]) : W[r];
+      if(P[r] <= P[r - 1]) {
+        P[r] = P[r - 1];
+        share[r] = share[r - 1] == none ? r - 1 : share[r - 1];
+      }
+    }
+    const double winding = (W[n - 1] + cyclic(raw[s0] - raw[rot(n - 1)]) - O) / L;
+    if(std::abs(winding - 1) > 1e-6) {
+      request_all(c);
+      m_report.failure = "the first buffer points do not project once around their loop";
+      return;
+    }
+    if(!std::getenv("QM2_NOSPREAD")) {
+    // Points sharing a node (they project onto one reflex corner, or fold back) are spread
+    // along the loop around it, one node each, at about their own spacing: the strip stays a
+    // ladder and the pairing is left free to fan where it pays.
+    for(std::size_t r = 0; r < n; ++r) P[r] = (std::min)(P[r], O + L);
+    for(std::size_t a = 0; a < n;) {
+      std::size_t b = a;
+      while(b + 1 < n && P[b + 1] == P[a]) ++b;
+      const bool at_end = P[a] >= O + L;
+      if(b == a && !at_end) { ++a; continue; }
+      const double p0 = P[a];
+      const double before = a == 0 ? p0 : P[a - 1];
+      const double after = b + 1 < n ? P[b + 1] : O + L;
+      // the anchor keeps the node; at the start it must stay first, at the end nothing may
+      // reach the start again
+      const std::size_t anchor = a == 0 ? 0 : (at_end ? n : (a + b) / 2);
+      auto spacing = [&](std::size_t r1, std::size_t r2) {
+        return length_2d(minus_2d(F[rot(r1)], F[rot(r2)]));
+      };
+      if(anchor > a) { // a .. anchor-1 go before p0
+        const std::size_t cnt = (anchor == n ? b + 1 : anchor) - a;
+        const double room = (p0 - before) / double(cnt + 1);
+        double s = p0;
+        for(std::size_t r = (anchor == n ? b + 1 : anchor); r-- > a;) {
+          s -= (std::min)(room, spacing(r, r + 1 < n ? r + 1 : r));
+          P[r] = s;
+          snap[rot(r)] = none;
+          hit[rot(r)] = locate_param(l, s);
+        }
+      }
+      if(anchor < n && b > anchor) { // anchor+1 .. b go after p0
+        const double room = (after - p0) / double(b - anchor + 1);
+        double s = p0;
+        for(std::size_t r = anchor + 1; r <= b; ++r) {
+          s += (std::min)(room, spacing(r, r - 1));
+          P[r] = s;
+          snap[rot(r)] = none;
+          hit[rot(r)] = locate_param(l, s);
+        }
+      }
+      for(std::size_t r = a; r <= b; ++r) share[r] = none;
+      a = b + 1;
+    }
+    }
+
+    // candidate nodes, by parameter from O: loop vertices and the F points' own projections
+    struct Node { double param; std::size_t vertex; std::size_t owner; Point_2d xy; bool keep; };
+    std::vector<Node> nodes;
+    std::vector<bool> snapped(nv, false);
+    for(std::size_t r = 0; r < n; ++r)
+      if(share[r] == none && snap[rot(r)] != none) snapped[snap[rot(r)]] = true;
+    for(std::size_t k = 0; k < nv; ++k) {
+      double s = std::fmod(m_locator->arc(l, k) - O, L);
+      if(s < 0) s += L;
+      nodes.push_back(Node{ O + s, k, none, loop_xy[k], snapped[k] || is_feature(l, k) });
+    }
+    for(std::size_t r = 0; r < n; ++r)
+      if(share[r] == none && snap[rot(r)] == none && P[r] < O + L * (1 - 1e-12))
+        nodes.push_back(Node{ P[r], none, r, hit[rot(r)].point, true });
+    std::stable_sort(nodes.begin(), nodes.end(), [](const Node& x, const Node& y) {
+      return x.param < y.param || (x.param == y.param && x.vertex != none && y.vertex == none);
+    });
+    // a projection on a vertex (to rounding) is that vertex; a second one shares it
+    std::vector<std::size_t> alias_vertex(n, none);
+    {
+      const double tol = (std::getenv("QM2_MT") ? std::atof(std::getenv("QM2_MT")) : 1e-9) * L;
+      std::vector<Node> merged;
+      for(const Node& nd : nodes) {
+        if(!merged.empty() && nd.param - merged.back().param <= tol
+           && (nd.vertex == none) != (merged.back().vertex == none)) {
+          const bool back_is_vertex = merged.back().vertex != none;
+          Node vertex_node = back_is_vertex ? merged.back() : nd;
+          const std::size_t owner = back_is_vertex ? nd.owner : merged.back().owner;
+          if(vertex_node.owner == none) vertex_node.owner = owner;
+          else alias_vertex[owner] = vertex_node.vertex;
+          vertex_node.keep = true;
+          merged.back() = vertex_node;
+          continue;
+        }
+        merged.push_back(nd);
+      }
+      nodes = std::move(merged);
+    }
+    // Loop vertices that are no corners (they turn the boundary by less than the feature
+    // angle) and hold no node may be left out where the chord between the kept nodes around
+    // them stays within the tolerance (Douglas-Peucker): that keeps the strip a ladder.
+    std::vector<std::pair<double, std::size_t>> dropped; // (deviation, node)
+    {
+      const std::size_t N = nodes.size();
+      std::vector<std::size_t> kept_at;
+      for(std::size_t k = 0; k < N; ++k) if(nodes[k].keep) kept_at.push_back(k);
+      if(kept_at.empty()) { nodes[0].keep = true; kept_at.push_back(0); }
+      std::vector<std::pair<std::size_t, std::size_t>> runs; // (a, b) kept, b after a cyclically
+      for(std::size_t j = 0; j < kept_at.size(); ++j)
+        runs.emplace_back(kept_at[j], kept_at[(j + 1) % kept_at.size()]);
+      while(!runs.empty()) {
+        auto [a, b] = runs.back();
+        runs.pop_back();
+        const std::size_t len = (b + N - a) % N == 0 ? N : (b + N - a) % N;
+        const Point_2d A = nodes[a].xy, B = nodes[b].xy;
+        const double chord = length_2d(minus_2d(B, A));
+        const double tol = std::getenv("QM2_TOL") ? (std::min)(m_chord_tolerance, std::atof(std::getenv("QM2_TOL")) * chord) : m_chord_tolerance;
+        double worst = -1;
+        std::size_t at = none;
+        for(std::size_t j = 1; j < len; ++j) {
+          const std::size_t k = (a + j) % N;
+          const double d = point_segment_distance(nodes[k].xy, A, B);
+          if(d > worst) { worst = d; at = k; }
+        }
+        if(at == none) continue;
+        if(worst > tol || chord == 0) {
+          nodes[at].keep = true;
+          runs.emplace_back(a, at);
+          runs.emplace_back(at, b);
+        }
+      }
+      for(std::size_t k = 0; k < N; ++k)
+        if(!nodes[k].keep) {
+          // its distance from the chord of its kept neighbours
+          std::size_t a = (k + N - 1) % N, b = (k + 1) % N;
+          while(!nodes[a].keep) a = (a + N - 1) % N;
+          while(!nodes[b].keep) b = (b + 1) % N;
+          dropped.emplace_back(point_segment_distance(nodes[k].xy, nodes[a].xy, nodes[b].xy), k);
+        }
+    }
+    // A kept vertex wider than 135 degrees that no F point maps to takes over the node of
+    // the nearer neighbouring projection: a fan around it would be flat or concave.
+    for(std::size_t k = 0; k < nodes.size(); ++k) {
+      if(!nodes[k].keep || nodes[k].vertex == none || nodes[k].owner != none) continue;
+      const std::size_t v = nodes[k].vertex;
+      if(360.0 - right_side_angle(loop_xy[(v + nv - 1) % nv], loop_xy[v], loop_xy[(v + 1) % nv]) <= m_snap_above)
+        continue;
+      std::size_t best = none;
+      double bd = HUGE_VAL;
+      for(int dir = -1; dir <= 1; dir += 2) {
+        std::size_t j = k;
+        do { j = (j + nodes.size() + dir) % nodes.size(); } while(!nodes[j].keep && j != k);
+        if(j == k || nodes[j].vertex != none || nodes[j].owner == none) continue;
+        if(nodes[j].owner == 0) continue; // the start stays first
+        const double d = std::abs(cyclic(nodes[j].param - nodes[k].param));
+        if(d < bd) { bd = d; best = j; }
+      }
+      if(best == none) continue;
+      const std::size_t r = nodes[best].owner;
+      nodes[k].owner = r;
+      snap[rot(r)] = v;
+      P[r] = nodes[k].param;
+      nodes[best].keep = false;
+      nodes[best].owner = none;
+    }
+    std::vector<Node> chain;
+    std::vector<std::size_t> chain_of_node(nodes.size(), none);
+    for(std::size_t k = 0; k < nodes.size(); ++k)
+      if(nodes[k].keep) { chain_of_node[k] = chain.size(); chain.push_back(nodes[k]); }
+    const std::size_t M0 = chain.size();
+    std::vector<std::size_t> gid(M0);
+    for(std::size_t k = 0; k < M0; ++k)
+      gid[k] = chain[k].vertex != none ? input_vertex_point(l, chain[k].vertex)
+                                       : point_on_edge(l, hit[rot(chain[k].owner)].edge, hit[rot(chain[k].owner)].t);
+    std::vector<std::size_t> node_of_vertex(nv, none), node_of_owner(n, none);
+    for(std::size_t k = 0; k < M0; ++k) {
+      if(chain[k].vertex != none) node_of_vertex[chain[k].vertex] = k;
+      if(chain[k].owner != none) node_of_owner[chain[k].owner] = k;
+    }
+    std::vector<std::size_t> g(n);
+    for(std::size_t r = 0; r < n; ++r) {
+      if(share[r] != none) { g[r] = g[share[r]]; continue; }
+      if(P[r] >= O + L * (1 - 1e-12)) { g[r] = M0; continue; } // projects past the start
+      g[r] = snap[rot(r)] != none ? node_of_vertex[snap[rot(r)]]
+             : alias_vertex[r] != none ? node_of_vertex[alias_vertex[r]] : node_of_owner[r];
+      if(g[r] == none) g[r] = r > 0 ? g[r - 1] : 0;
+      if(r > 0 && g[r] < g[r - 1]) g[r] = g[r - 1];
+    }
+    if(g[0] != 0) {
+      request_all(c);
+      m_report.failure = "the boundary chain of a buffer strip is out of order";
+      return;
+    }
+
+    const std::size_t fbase = m_first_base[c];
+    std::vector<std::size_t> fid(n);
+    for(std::size_t r = 0; r < n; ++r) fid[r] = fbase + rot(r);
+
+    // n F edges and M G edges make n + M triangles, paired into quads. If that is odd, one
+    // more node goes in: a dropped vertex (the farthest from its chord), or a point beside a
+    // corner, or in the middle of one of the longest edges; the pairing decides.
+    std::sort(dropped.rbegin(), dropped.rend());
+    std::vector<std::pair<double, std::size_t>> dropped_params; // (param, vertex)
+    for(std::size_t j = 0; j < dropped.size() && j < (std::getenv("QM2_ND") ? std::size_t(std::atoi(std::getenv("QM2_ND"))) : 2); ++j)
+      dropped_params.emplace_back(nodes[dropped[j].second].param, nodes[dropped[j].second].vertex);
+    std::vector<double> gparam(gid.size());
+    for(std::size_t k = 0; k < gid.size(); ++k) gparam[k] = chain[k].param;
+    auto solve = [&](std::vector<std::size_t>& gids, std::vector<double>& params, std::vector<std::size_t>& gs) {
+      const std::size_t M0 = gids.size();
+      if((n + M0) % 2 == 0) return pair_strip(fid, gids, gs);
+      struct Insert { std::size_t after; Point_2d xy; std::size_t vertex; double t; double param; };
+      std::vector<Insert> inserts;
+      for(const auto& d : dropped_params) {
+        const std::size_t after = std::size_t(std::upper_bound(params.begin(), params.end(), d.first) - params.begin()) - 1;
+        if(after < M0) inserts.push_back({ after, loop_xy[d.second], d.second, 0, d.first });
+      }
+      auto edge_len = [&](std::size_t k) { return length_2d(minus_2d(m_xy[gids[(k + 1) % M0]], m_xy[gids[k]])); };
+      std::vector<std::pair<double, std::size_t>> edges;
+      for(std::size_t k = 0; k < M0; ++k) edges.emplace_back(edge_len(k), k);
+      std::sort(edges.rbegin(), edges.rend());
+      auto between = [&](std::size_t k, double t) {
+        const Point_2d A = m_xy[gids[k]], B = m_xy[gids[(k + 1) % M0]];
+        const double pb = k + 1 < M0 ? params[k + 1] : params[0] + L;
+        return Insert{ k, Point_2d{ A.x + t * (B.x - A.x), A.y + t * (B.y - A.y) }, none, t,
+                       params[k] + t * (pb - params[k]) };
+      };
+      for(std::size_t j = 0; j < edges.size() && j < 3; ++j) inserts.push_back(between(edges[j].second, 0.5));
+      for(std::size_t k = 0; k < M0; ++k) {
+        auto it = m_corner_angle.find(gids[k]);
+        if(it == m_corner_angle.end() || std::abs(180.0 - it->second) < m_feature_angle) continue;
+        inserts.push_back(between((k + M0 - 1) % M0, 0.7));
+        inserts.push_back(between(k, 0.3));
+      }
+      Strip_result best;
+      std::size_t chosen = none;
+      auto with_insert = [&](const Insert& ins, std::size_t id, std::vector<std::size_t>& g2id,
+                             std::vector<std::size_t>& g2) {
+        g2id = gids;
+        g2id.insert(g2id.begin() + std::ptrdiff_t(ins.after + 1), id);
+        g2 = gs;
+        for(auto& x : g2) if(x > ins.after) ++x;
+      };
+      for(std::size_t j = 0; j < inserts.size(); ++j) {
+        m_xy.push_back(inserts[j].xy);
+        std::vector<std::size_t> g2id, g2;
+        with_insert(inserts[j], m_xy.size() - 1, g2id, g2);
+        Strip_result res = pair_strip(fid, g2id, g2);
+        m_xy.pop_back();
+        if(res.cost < best.cost) { best = std::move(res); chosen = j; }
+      }
+      if(chosen == none) return best;
+      const Insert& ins = inserts[chosen];
+      const std::size_t id = ins.vertex != none ? input_vertex_point(l, ins.vertex)
+                                                : add_point_between(gids[ins.after], gids[(ins.after + 1) % M0], ins.t);
+      std::vector<std::size_t> g2id, g2;
+      with_insert(ins, id, g2id, g2);
+      gids = std::move(g2id);
+      gs = std::move(g2);
+      params.insert(params.begin() + std::ptrdiff_t(ins.after + 1), ins.param);
+      return pair_strip(fid, gids, gs);
+    };
+    Strip_result best = solve(gid, gparam, g);
+    // A fan of boundary edges that is flat (its middle node is no input vertex and lies on a
+    // straight piece of the boundary) cannot be made a quad: such a node is taken out and the
+    // strip paired again.
+    for(int attempt = 0; attempt < 32 && best.cost.sum >= 1e12; ++attempt) {
+      std::size_t remove = none;
+      for(const Quad& q : best.quads) {
+        if(cost(q) < 1000.0) continue;
+        std::vector<std::size_t> pos;
+        for(std::size_t v : q) {
+          auto it = std::find(gid.begin(), gid.end(), v);
+          if(it != gid.end()) pos.push_back(std::size_t(it - gid.begin()));
+        }
+        if(pos.size() != 3) continue;
+        const std::size_t M0 = gid.size();
+        for(std::size_t mid : pos) {
+          const bool has_prev = std::find(pos.begin(), pos.end(), (mid + M0 - 1) % M0) != pos.end();
+          const bool has_next = std::find(pos.begin(), pos.end(), (mid + 1) % M0) != pos.end();
+          if(has_prev && has_next && mid != 0 && m_input_vertex_ids.count(gid[mid]) == 0) remove = mid;
+        }
+        if(remove != none) break;
+      }
+      if(remove == none) break;
+      gid.erase(gid.begin() + std::ptrdiff_t(remove));
+      gparam.erase(gparam.begin() + std::ptrdiff_t(remove));
+      for(auto& x : g) if(x >= remove) --x;
+      best = solve(gid, gparam, g);
+    }
+    if(best.cost.worst == HUGE_VAL) {
+      request_all(c);
+      m_report.failure = "no pairing of a buffer strip into quads";
+      return;
+    }
+    const std::size_t M = gid.size();
+    for(std::size_t k = 0; k < M; ++k)
+      if(m_slide.count(gid[k]))
+        m_slide[gid[k]].neighbors = { gid[(k + M - 1) % M], gid[(k + 1) % M] };
+    if(std::getenv("QM2_DEBUG")) {
+      std::cerr << "strip " << c << " n " << n << " M " << M << " cost " << best.cost.sum << " worst " << best.cost.worst << "\n";
+      for(const Quad& q : best.quads) {
+        int nf = 0;
+        for(std::size_t v : q) if(v >= fbase && v < fbase + n) ++nf;
+        if(nf != 2) std::cerr << "  fan nf=" << nf << " at " << m_xy[q[0]].x << "," << m_xy[q[0]].y << " cost " << cost(q) << "\n";
+      }
+    }
+    for(const Quad& q : best.quads) emit_strip_quad(q, cyc);
+  }
+
+  struct Strip_result
+  {
+    Cost cost;
+    std::vector<Quad> quads;
+  };
+
+  // Dynamic programming over the gaps of a strip. Gap r lies between F points r, r+1 (mesh
+  // ids fid) and chain nodes g[r] .. g[r+1] (g[n] = M wraps to 0); `mid` of its G triangles
+  // (apex F_r) come before its F triangle, the rest (apex F_{r+1}) after. State: 0 = no
+  // triangle pending; 1 = the gap's F triangle is pending (it came last); 2 = its last G
+  // triangle is.
+  Strip_result pair_strip(const std::vector<std::size_t>& fid, const std::vector<std::size_t>& gid,
+                          const std::vector<std::size_t>& g) const
+  {
+    const std::size_t n = fid.size(), M = gid.size();
+    std::vector<std::size_t> k_of(n);
+    for(std::size_t r = 0; r + 1 < n; ++r) k_of[r] = g[r + 1] - g[r];
+    k_of[n - 1] = M - g[n - 1];
+    auto F = [&](std::size_t r) { return fid[r % n]; };
+    auto G = [&](std::size_t k) { return gid[k % M]; };
+    auto triangles = [&](std::size_t r, std::size_t mid) {
+      std::vector<Triangle> t;
+      const std::size_t g0 = g[r], k = k_of[r];
+      for(std::size_t e = 0; e < mid; ++e) t.push_back({ G(g0 + e), G(g0 + e + 1), F(r) });
+      t.push_back({ F(r), G(g0 + mid), F(r + 1) });
+      for(std::size_t e = mid; e < k; ++e) t.push_back({ G(g0 + e), G(g0 + e + 1), F(r + 1) });
+      return t;
+    };
+    auto pending = [&](std::size_t r, int state) {
+      const std::size_t end = g[r] + k_of[r];
+      return state == 1 ? Triangle{ F(r), G(end), F(r + 1) } : Triangle{ G(end + M - 1), G(end), F(r + 1) };
+    };
+    Strip_result result;
+    std::vector<std::size_t> best_mid;
+    int best_start = 0;
+    for(int start = 0; start < 3; ++start) {
+      if(start == 2 && k_of[n - 1] == 0) continue;
+      std::vector<std::array<Cost, 3>> best(n + 1);
+      std::vector<std::array<std::pair<std::size_t, int>, 3>> back(n + 1);
+      best[0][start] = Cost{ 0, 0 };
+      for(std::size_t r = 0; r < n; ++r)
+        for(int s = 0; s < 3; ++s) {
+          if(best[r][s].worst == HUGE_VAL) continue;
+          const Triangle in = s == 0 ? Triangle{} : pending(r == 0 ? n - 1 : r - 1, s);
+          for(std::size_t mid = 0; mid <= k_of[r]; ++mid) {
+            const auto t = triangles(r, mid);
+            Cost cst = best[r][s];
+            std::size_t pos = 0;
+            if(s != 0) { cst.add(cost(merge(in, t[0]))); pos = 1; }
+            for(; pos + 1 < t.size(); pos += 2) cst.add(cost(merge(t[pos], t[pos + 1])));
+            const int out = pos == t.size() ? 0 : (mid == k_of[r] ? 1 : 2);
+            if(cst < best[r + 1][out]) { best[r + 1][out] = cst; back[r + 1][out] = { mid, s }; }
+          }
+        }
+      if(best[n][start] < result.cost) {
+        result.cost = best[n][start];
+        best_start = start;
+        best_mid.assign(n, 0);
+        int s = start;
+        for(std::size_t r = n; r > 0; --r) { best_mid[r - 1] = back[r][s].first; s = back[r][s].second; }
+      }
+    }
+    if(result.cost.worst == HUGE_VAL) return result;
+    Triangle in = best_start == 0 ? Triangle{} : pending(n - 1, best_start);
+    bool has_in = best_start != 0;
+    for(std::size_t r = 0; r < n; ++r) {
+      const auto t = triangles(r, best_mid[r]);
+      std::size_t pos = 0;
+      if(has_in) { result.quads.push_back(merge(in, t[0])); pos = 1; }
+      for(; pos + 1 < t.size(); pos += 2) result.quads.push_back(merge(t[pos], t[pos + 1]));
+      has_in = pos < t.size();
+      if(has_in) in = t.back();
+    }
+    return result;
+  }
+
+  // the point of loop l at arclength s from its vertex 0
+  Loop_locator::Hit locate_param(std::size_t l, double s) const
+  {
+    const double L = m_locator->length(l);
+    s = std::fmod(s, L);
+    if(s < 0) s += L;
+    const auto& v = m_locator->loop(l);
+    std::size_t lo = 0, hi = v.size();
+    while(hi - lo > 1) {
+      const std::size_t mid = (lo + hi) / 2;
+      if(m_locator->arc(l, mid) <= s) lo = mid; else hi = mid;
+    }
+    const double len = m_locator->arc(l, lo + 1) - m_locator->arc(l, lo);
+    Loop_locator::Hit h;
+    h.loop = l;
+    h.edge = lo;
+    h.t = len > 0 ? (std::min)(1.0, (std::max)(0.0, (s - m_locator->arc(l, lo)) / len)) : 0.0;
+    const Point_2d& a = v[lo];
+    const Point_2d& b = v[(lo + 1) % v.size()];
+    h.point = Point_2d{ a.x + h.t * (b.x - a.x), a.y + h.t * (b.y - a.y) };
+    h.dist = 0;
+    return h;
+  }
+
+  // a new boundary point at fraction t from boundary node a to b: on their input edge when
+  // they share one, else on the chord (a dropped vertex lies between them)
+  std::size_t add_point_between(std::size_t a, std::size_t b, double t)
+  {
+    auto sa = m_slide.find(a), sb = m_slide.find(b);
+    const Point_2d A = m_xy[a], B = m_xy[b];
+    const Point_2d X{ A.x + t * (B.x - A.x), A.y + t * (B.y - A.y) };
+    for(auto it : { sa, sb })
+      if(it != m_slide.end()) {
+        const auto& lv = m_loops.loops[it->second.loop].vertices;
+        const Point_2d E0 = to_point_2d(m_domain.points[lv[it->second.edge]]);
+        const Point_2d E1 = to_point_2d(m_domain.points[lv[(it->second.edge + 1) % lv.size()]]);
+        const Point_2d e = minus_2d(E1, E0);
+        const double el2 = dot_2d(e, e);
+        if(std::abs(cross_2d(e, minus_2d(X, E0))) <= 1e-9 * el2)
+          return point_on_edge(it->second.loop, it->second.edge, dot_2d(minus_2d(X, E0), e) / el2);
+      }
+    m_mesh.points.push_back(point_between(m_mesh.points[a], m_mesh.points[b], t));
+    m_xy.push_back(to_point_2d(m_mesh.points.back()));
+    return m_mesh.points.size() - 1;
+  }
+
+  // a loop vertex the mesh must keep: it turns the boundary by the feature angle or more
+  bool is_feature(std::size_t l, std::size_t k) const
+  {
+    const auto& v = m_locator->loop(l);
+    const std::size_t nv = v.size();
+    const double beta = right_side_angle(v[(k + nv - 1) % nv], v[k], v[(k + 1) % nv]);
+    return std::abs(180.0 - beta) >= m_feature_angle;
+  }
+
+  static double point_segment_distance(const Point_2d& p, const Point_2d& a, const Point_2d& b)
+  {
+    const Point_2d ab = minus_2d(b, a);
+    const double len2 = dot_2d(ab, ab);
+    double t = len2 > 0 ? dot_2d(minus_2d(p, a), ab) / len2 : 0.0;
+    t = (std::min)(1.0, (std::max)(0.0, t));
+    return length_2d(minus_2d(p, Point_2d{ a.x + t * ab.x, a.y + t * ab.y }));
+  }
+
+  void emit_strip_quad(const Quad& q, const std::vector<std::size_t>&)
+  {
+    add_quad(q);
+    ++m_report.second_layer_quads;
+  }
+
+  // the mesh vertex of a chain node (an input vertex is added once, at its exact position)
+  std::size_t input_vertex_point(std::size_t l, std::size_t k)
+  {
+    {
+      const std::size_t input = m_loops.loops[l].vertices[k];
+      auto it = m_input_vertex.find(input);
+      if(it != m_input_vertex.end()) return it->second;
+      m_mesh.points.push_back(m_domain.points[input]);
+      m_xy.push_back(to_point_2d(m_domain.points[input]));
+      const std::size_t id = m_mesh.points.size() - 1;
+      m_input_vertex[input] = id;
+      m_input_vertex_ids.insert(id);
+      const auto& lv = m_loops.loops[l].vertices;
+      const std::size_t nv = lv.size();
+      m_corner_angle[id] = 360.0 - right_side_angle(to_point_2d(m_domain.points[lv[(k + nv - 1) % nv]]),
+                                                    to_point_2d(m_domain.points[input]),
+                                                    to_point_2d(m_domain.points[lv[(k + 1) % nv]]));
+      return id;
+    }
+  }
+
+  std::size_t point_on_edge(std::size_t l, std::size_t edge, double t)
+  {
+    const auto& lv = m_loops.loops[l].vertices;
+    const Point_2& a = m_domain.points[lv[edge]];
+    const Point_2& b = m_domain.points[lv[(edge + 1) % lv.size()]];
+    m_mesh.points.push_back(point_between(a, b, t));
+    m_xy.push_back(to_point_2d(m_mesh.points.back()));
+    m_slide[m_mesh.points.size() - 1] = Slide{ l, edge, { none, none } };
+    return m_mesh.points.size() - 1;
+  }
+
+  // a + t (b - a), on the line through a and b exactly under exact constructions
+  Point_2 point_between(const Point_2& a, const Point_2& b, double t) const
+  {
+    auto x = m_traits.compute_x_2_object();
+    auto y = m_traits.compute_y_2_object();
+    const FT ft(t);
+    return m_traits.construct_point_2_object()(x(a) + ft * (x(b) - x(a)), y(a) + ft * (y(b) - y(a)));
+  }
+
+  // a new boundary point: it may slide along its input edge between its chain neighbours
+  struct Slide
+  {
+    std::size_t loop, edge;
+    std::array<std::size_t, 2> neighbors;
+  };
+
+  std::size_t point_at_param(std::size_t l, double s)
+  {
+    const double L = m_locator->length(l);
+    s = std::fmod(s, L);
+    if(s < 0) s += L;
+    const std::size_t nv = m_locator->loop(l).size();
+    std::size_t lo = 0, hi = nv; // find edge with arc(lo) <= s < arc(lo+1)
+    while(hi - lo > 1) {
+      std::size_t mid = (lo + hi) / 2;
+      if(m_locator->arc(l, mid) <= s) lo = mid; else hi = mid;
+    }
+    const double len = m_locator->arc(l, lo + 1) - m_locator->arc(l, lo);
+    const double t = len > 0 ? (std::min)(1.0, (std::max)(0.0, (s - m_locator->arc(l, lo)) / len)) : 0.0;
+    return point_on_edge(l, lo, t);
+  }
+
+  Mesh& m_mesh;
+  std::vector<double> m_size;
+  const Domain_2<K>& m_domain;
+  const Domain_loops_2<K>& m_loops;
+  K m_traits;
+  std::unique_ptr<Loop_locator> m_locator;
+  std::vector<Point_2d> m_xy;
+  std::vector<std::vector<std::size_t>> m_cycles;
+  std::vector<std::size_t> m_cycle_loop;
+  std::vector<std::vector<Point_2d>> m_first;
+  std::vector<std::size_t> m_first_base;
+  std::vector<std::size_t> m_f_core; // core vertex of each first buffer point
+  std::map<std::size_t, std::size_t> m_input_vertex;
+  std::map<std::size_t, double> m_corner_angle;
+  std::map<std::size_t, Slide> m_slide;
+  std::set<std::size_t> m_input_vertex_ids;
+  std::set<std::size_t> m_on_cycle;
+  bool m_first_built = false;
+  std::size_t m_core_points = 0;
+  double m_snap_above = std::getenv("QM2_SNAP") ? std::atof(std::getenv("QM2_SNAP")) : 360.0;
+  double m_feature_angle = 20.0;  // turning (degrees) that makes a loop vertex a corner
+  double m_chord_tolerance = 0;   // how far the mesh boundary may leave the input's
+  Buffer_report m_report;
+};
+
+} // namespace internal
+} // namespace Quad_mesher_2
+} // namespace CGAL
+
+#endif // CGAL_QUAD_MESHER_2_INTERNAL_BUFFER_LAYERS_H
