@@ -218,6 +218,9 @@ public:
       layers.optimize();
     if(ok)
       layers.check_new_quads(0);
+    const std::vector<std::size_t> index = layers.remove_unused_points();
+    for(std::size_t& v : m_point_vertices)
+      v = index[v];
     m_buffer_report = layers.report();
     record("buffer", start);
     return ok && m_buffer_report.invalid_quads == 0 && m_buffer_report.bad_angle_quads == 0;

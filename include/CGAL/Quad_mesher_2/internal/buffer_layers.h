@@ -52,8 +52,6 @@
 #include <set>
 #include <utility>
 #include <vector>
-#include <iostream>
-#include <cstdlib>
 
 namespace CGAL {
 namespace Quad_mesher_2 {
@@ -382,9 +380,10 @@ public:
         const Point_2d& nb = m_xy[cyc[(i + 1) % n]];
         const Loop_locator::Hit h = m_locator->closest(b, 2 * m_size[cyc[i]], l);
         const Point_2d toward = normalized_2d(minus_2d(h.point, b));
-        const double w = std::getenv("QM2_W") ? std::atof(std::getenv("QM2_W")) : 0.5;
+        // halfway between the bisector of beta and the direction to the nearest boundary
+        // point: bisectors alone converge in the core's notches and cross
         const Point_2d bis = right_bisector(a, b, nb);
-        const Point_2d d = normalized_2d(Point_2d{w * bis.x + (1 - w) * toward.x, w * bis.y + (1 - w) * toward.y});
+        const Point_2d d = normalized_2d(Point_2d{ 0.5 * (bis.x + toward.x), 0.5 * (bis.y + toward.y) });
         const double c_dn = (std::max)(dot_2d(d, toward), 0.5);
         const double lambda = 0.5 * h.dist / c_dn;
         F[i] = Point_2d{b.x + lambda * d.x, b.y + lambda * d.y};
@@ -452,11 +451,30 @@ public:
 
   void begin() { m_core_points = m_mesh.points.size(); }
 
+  /// Drops the points no quad uses (boundary nodes the pairing took out again); returns the
+  /// new index of every old point (`none` for a dropped one).
+  std::vector<std::size_t> remove_unused_points()
+  {
+    std::vector<std::size_t> index(m_mesh.points.size(), none);
+    for(const Quad& q : m_mesh.quads)
+      for(std::size_t v : q) index[v] = 0;
+    std::size_t next = 0;
+    for(std::size_t v = 0; v < index.size(); ++v)
+      if(index[v] == 0) {
+        m_mesh.points[next] = m_mesh.points[v];
+        index[v] = next++;
+      }
+    m_mesh.points.resize(next);
+    for(Quad& q : m_mesh.quads)
+      for(std::size_t& v : q) v = index[v];
+    return index;
+  }
+
   /// Local min-max angle optimisation of the buffer: the first buffer points move freely, the
   /// new boundary points slide along their input edge, the core's boundary vertices move too;
   /// a move is kept only if it lowers the largest deviation from 90° of the quads around the
   /// vertex and keeps them convex and unfolded. Input vertices never move.
-  void optimize(int passes = std::getenv("QM2_P") ? std::atoi(std::getenv("QM2_P")) : 12)
+  void optimize(int passes = 12)
   {
     std::vector<std::vector<std::size_t>> quads_at(m_mesh.points.size());
     for(std::size_t q = 0; q < m_mesh.quads.size(); ++q)
@@ -468,14 +486,27 @@ public:
     for(std::size_t v = m_core_points; v < m_mesh.points.size(); ++v)
       if(m_input_vertex_ids.count(v) == 0)
         movable.push_back(v);
-    // (quads outside [45, 135] around v, their worst deviation from 90)
+    // (invalid quads around v, quads outside [45, 135] around it, the worst deviation from
+    // 90 degrees), compared in this order: no move may make a quad invalid
+    struct Local
+    {
+      int invalid = 0, out = 0;
+      double worst = 0;
+      bool operator<(const Local& o) const
+      {
+        if(invalid != o.invalid) return invalid < o.invalid;
+        if(out != o.out) return out < o.out;
+        return worst < o.worst - 1e-9;
+      }
+    };
     auto local_cost = [&](std::size_t v) {
-      double worst = 0, angle_sum = 0;
-      int out = 0;
+      Local r;
+      double angle_sum = 0;
       for(std::size_t q : quads_at[v]) {
         const double b = cost(m_mesh.quads[q]);
-        worst = (std::max)(worst, b);
-        if(b > 45.0 + 1e-9) ++out;
+        r.worst = (std::max)(r.worst, b);
+        if(b >= 1000.0) ++r.invalid;
+        else if(b > 45.0 + 1e-9) ++r.out;
         const Quad& Q = m_mesh.quads[q];
         int c = 0;
         while(Q[c] != v) ++c;
@@ -483,14 +514,14 @@ public:
       }
       const double expected = m_slide.count(v) ? 180.0 : (is_core_boundary(v, quads_at) ? -1 : 360.0);
       if(expected > 0 && std::abs(angle_sum - expected) > 1e-6)
-        return std::make_pair(1 << 20, 3000.0);
-      return std::make_pair(out, worst);
+        r.invalid += 1 << 20; // folded
+      return r;
     };
     for(int pass = 0; pass < passes; ++pass) {
       bool improved = false;
       for(std::size_t v : movable) {
-        const auto current = local_cost(v);
-        if(current.second <= 20.0) continue;
+        const Local current = local_cost(v);
+        if(current.worst <= 20.0) continue;
         const Point_2d old = m_xy[v];
         std::vector<Point_2d> targets;
         Point_2d lap{0, 0};
@@ -511,16 +542,16 @@ public:
         for(std::size_t k = 0; k + 1 < targets.size(); ++k) { mean.x += targets[k].x; mean.y += targets[k].y; }
         mean.x /= double(targets.size() - 1); mean.y /= double(targets.size() - 1);
         targets.push_back(mean);
-        auto best = current;
+        Local best = current;
         Point_2d best_p = old;
         for(const Point_2d& t : targets)
           for(double step : { 1.0, 0.5, 0.25, 0.1 }) {
             Point_2d p{old.x + step * (t.x - old.x), old.y + step * (t.y - old.y)};
             if(!slide_to(v, p)) continue;
             m_xy[v] = p;
-            const auto c = local_cost(v);
+            const Local c = local_cost(v);
             m_xy[v] = old;
-            if(c.first < best.first || (c.first == best.first && c.second < best.second - 1e-9)) {
+            if(c < best) {
               best = c;
               best_p = p;
             }
@@ -786,7 +817,6 @@ private:
       m_report.failure = "the first buffer points do not project once around their loop";
       return;
     }
-    if(!std::getenv("QM2_NOSPREAD")) {
     // Points sharing a node (they project onto one reflex corner, or fold back) are spread
     // along the loop around it, one node each, at about their own spacing: the strip stays a
     // ladder and the pairing is left free to fan where it pays.
@@ -829,7 +859,6 @@ private:
       for(std::size_t r = a; r <= b; ++r) share[r] = none;
       a = b + 1;
     }
-    }
 
     // candidate nodes, by parameter from O: loop vertices and the F points' own projections
     struct Node { double param; std::size_t vertex; std::size_t owner; Point_2d xy; bool keep; };
@@ -851,7 +880,7 @@ private:
     // a projection on a vertex (to rounding) is that vertex; a second one shares it
     std::vector<std::size_t> alias_vertex(n, none);
     {
-      const double tol = (std::getenv("QM2_MT") ? std::atof(std::getenv("QM2_MT")) : 1e-9) * L;
+      const double tol = 1e-9 * L;
       std::vector<Node> merged;
       for(const Node& nd : nodes) {
         if(!merged.empty() && nd.param - merged.back().param <= tol
@@ -887,7 +916,7 @@ private:
         const std::size_t len = (b + N - a) % N == 0 ? N : (b + N - a) % N;
         const Point_2d A = nodes[a].xy, B = nodes[b].xy;
         const double chord = length_2d(minus_2d(B, A));
-        const double tol = std::getenv("QM2_TOL") ? (std::min)(m_chord_tolerance, std::atof(std::getenv("QM2_TOL")) * chord) : m_chord_tolerance;
+        const double tol = m_chord_tolerance;
         double worst = -1;
         std::size_t at = none;
         for(std::size_t j = 1; j < len; ++j) {
@@ -910,31 +939,6 @@ private:
           while(!nodes[b].keep) b = (b + 1) % N;
           dropped.emplace_back(point_segment_distance(nodes[k].xy, nodes[a].xy, nodes[b].xy), k);
         }
-    }
-    // A kept vertex wider than 135 degrees that no F point maps to takes over the node of
-    // the nearer neighbouring projection: a fan around it would be flat or concave.
-    for(std::size_t k = 0; k < nodes.size(); ++k) {
-      if(!nodes[k].keep || nodes[k].vertex == none || nodes[k].owner != none) continue;
-      const std::size_t v = nodes[k].vertex;
-      if(360.0 - right_side_angle(loop_xy[(v + nv - 1) % nv], loop_xy[v], loop_xy[(v + 1) % nv]) <= m_snap_above)
-        continue;
-      std::size_t best = none;
-      double bd = HUGE_VAL;
-      for(int dir = -1; dir <= 1; dir += 2) {
-        std::size_t j = k;
-        do { j = (j + nodes.size() + dir) % nodes.size(); } while(!nodes[j].keep && j != k);
-        if(j == k || nodes[j].vertex != none || nodes[j].owner == none) continue;
-        if(nodes[j].owner == 0) continue; // the start stays first
-        const double d = std::abs(cyclic(nodes[j].param - nodes[k].param));
-        if(d < bd) { bd = d; best = j; }
-      }
-      if(best == none) continue;
-      const std::size_t r = nodes[best].owner;
-      nodes[k].owner = r;
-      snap[rot(r)] = v;
-      P[r] = nodes[k].param;
-      nodes[best].keep = false;
-      nodes[best].owner = none;
     }
     std::vector<Node> chain;
     std::vector<std::size_t> chain_of_node(nodes.size(), none);
@@ -974,7 +978,7 @@ private:
     // corner, or in the middle of one of the longest edges; the pairing decides.
     std::sort(dropped.rbegin(), dropped.rend());
     std::vector<std::pair<double, std::size_t>> dropped_params; // (param, vertex)
-    for(std::size_t j = 0; j < dropped.size() && j < (std::getenv("QM2_ND") ? std::size_t(std::atoi(std::getenv("QM2_ND"))) : 2); ++j)
+    for(std::size_t j = 0; j < dropped.size() && j < 2; ++j)
       dropped_params.emplace_back(nodes[dropped[j].second].param, nodes[dropped[j].second].vertex);
     std::vector<double> gparam(gid.size());
     for(std::size_t k = 0; k < gid.size(); ++k) gparam[k] = chain[k].param;
@@ -998,11 +1002,16 @@ private:
                        params[k] + t * (pb - params[k]) };
       };
       for(std::size_t j = 0; j < edges.size() && j < 3; ++j) inserts.push_back(between(edges[j].second, 0.5));
+      std::vector<std::pair<double, std::size_t>> corners; // (turn, chain index): the sharpest 4
       for(std::size_t k = 0; k < M0; ++k) {
         auto it = m_corner_angle.find(gids[k]);
-        if(it == m_corner_angle.end() || std::abs(180.0 - it->second) < m_feature_angle) continue;
-        inserts.push_back(between((k + M0 - 1) % M0, 0.7));
-        inserts.push_back(between(k, 0.3));
+        if(it != m_corner_angle.end() && std::abs(180.0 - it->second) >= m_feature_angle)
+          corners.emplace_back(std::abs(180.0 - it->second), k);
+      }
+      std::sort(corners.rbegin(), corners.rend());
+      for(std::size_t j = 0; j < corners.size() && j < 4; ++j) {
+        inserts.push_back(between((corners[j].second + M0 - 1) % M0, 0.7));
+        inserts.push_back(between(corners[j].second, 0.3));
       }
       Strip_result best;
       std::size_t chosen = none;
@@ -1036,9 +1045,10 @@ private:
     // A fan of boundary edges that is flat (its middle node is no input vertex and lies on a
     // straight piece of the boundary) cannot be made a quad: such a node is taken out and the
     // strip paired again.
-    for(int attempt = 0; attempt < 32 && best.cost.sum >= 1e12; ++attempt) {
-      std::size_t remove = none;
+    for(int attempt = 0; attempt < 8 && best.cost.sum >= 1e12; ++attempt) {
+      std::vector<std::size_t> removed;
       for(const Quad& q : best.quads) {
+        std::size_t remove = none;
         if(cost(q) < 1000.0) continue;
         std::vector<std::size_t> pos;
         for(std::size_t v : q) {
@@ -1047,17 +1057,26 @@ private:
         }
         if(pos.size() != 3) continue;
         const std::size_t M0 = gid.size();
+        // the middle node if it may go, else an end of the fan: with one node fewer nearby the
+        // pairing can put the fan elsewhere
+        auto removable = [&](std::size_t k) { return k != 0 && m_input_vertex_ids.count(gid[k]) == 0; };
         for(std::size_t mid : pos) {
           const bool has_prev = std::find(pos.begin(), pos.end(), (mid + M0 - 1) % M0) != pos.end();
           const bool has_next = std::find(pos.begin(), pos.end(), (mid + 1) % M0) != pos.end();
-          if(has_prev && has_next && mid != 0 && m_input_vertex_ids.count(gid[mid]) == 0) remove = mid;
+          if(!has_prev || !has_next) continue;
+          for(std::size_t k : { mid, (mid + M0 - 1) % M0, (mid + 1) % M0 })
+            if(remove == none && removable(k)) remove = k;
         }
-        if(remove != none) break;
+        if(remove != none) removed.push_back(remove);
       }
-      if(remove == none) break;
-      gid.erase(gid.begin() + std::ptrdiff_t(remove));
-      gparam.erase(gparam.begin() + std::ptrdiff_t(remove));
-      for(auto& x : g) if(x >= remove) --x;
+      if(removed.empty()) break;
+      std::sort(removed.rbegin(), removed.rend());
+      removed.erase(std::unique(removed.begin(), removed.end()), removed.end());
+      for(std::size_t remove : removed) { // from the back: earlier positions stay valid
+        gid.erase(gid.begin() + std::ptrdiff_t(remove));
+        gparam.erase(gparam.begin() + std::ptrdiff_t(remove));
+        for(auto& x : g) if(x >= remove) --x;
+      }
       best = solve(gid, gparam, g);
     }
     if(best.cost.worst == HUGE_VAL) {
@@ -1069,14 +1088,6 @@ private:
     for(std::size_t k = 0; k < M; ++k)
       if(m_slide.count(gid[k]))
         m_slide[gid[k]].neighbors = { gid[(k + M - 1) % M], gid[(k + 1) % M] };
-    if(std::getenv("QM2_DEBUG")) {
-      std::cerr << "strip " << c << " n " << n << " M " << M << " cost " << best.cost.sum << " worst " << best.cost.worst << "\n";
-      for(const Quad& q : best.quads) {
-        int nf = 0;
-        for(std::size_t v : q) if(v >= fbase && v < fbase + n) ++nf;
-        if(nf != 2) std::cerr << "  fan nf=" << nf << " at " << m_xy[q[0]].x << "," << m_xy[q[0]].y << " cost " << cost(q) << "\n";
-      }
-    }
     for(const Quad& q : best.quads) emit_strip_quad(q, cyc);
   }
 
@@ -1309,7 +1320,6 @@ private:
   std::set<std::size_t> m_on_cycle;
   bool m_first_built = false;
   std::size_t m_core_points = 0;
-  double m_snap_above = std::getenv("QM2_SNAP") ? std::atof(std::getenv("QM2_SNAP")) : 360.0;
   double m_feature_angle = 20.0;  // turning (degrees) that makes a loop vertex a corner
   double m_chord_tolerance = 0;   // how far the mesh boundary may leave the input's
   Buffer_report m_report;
