@@ -143,13 +143,14 @@ public:
 
   /// the closest point to `p` on loop `l` (any loop if `l` is none), searching first within
   /// `radius` of `p`
-  Hit closest(const Point_2d& p, double radius, std::size_t l = none) const
+  /// (with `other_than`: on any loop but `l`)
+  Hit closest(const Point_2d& p, double radius, std::size_t l = none, bool other_than = false) const
   {
     Hit best;
     double r = (std::max)(radius, 1e-300);
     for(;;) {
       m_tree->query(Bbox_2(p.x - r, p.y - r, p.x + r, p.y + r), [&](std::size_t s) {
-        if(l != none && m_edge_of[s][0] != l) return;
+        if(l != none && (m_edge_of[s][0] != l) != other_than) return;
         Hit h = on_edge(p, m_edge_of[s][0], m_edge_of[s][1]);
         if(h.dist < best.dist) best = h;
       });
@@ -325,8 +326,11 @@ public:
       const bool same_turn = (cycle_area(c) > 0) == m_loops.loops[l].is_outer;
       if(owner[l] != none || !same_turn || 2 * votes[l] <= m_cycles[c].size()) {
         ok = false;
-        request_all(c);
-        if(owner[l] != none) request_all(owner[l]);
+        // the smaller of two cycles following one loop is a piece of core cut off by a
+        // narrow passage: refine along it
+        std::size_t cut = c;
+        if(owner[l] != none && m_cycles[owner[l]].size() < m_cycles[c].size()) std::swap(cut, owner[l]);
+        request_all(cut);
         m_report.failure = "the core mesh's boundary does not follow the domain's loops one to one";
         continue;
       }
@@ -339,8 +343,14 @@ public:
         ok = false;
         m_report.failure = "no core mesh is left near loop " + std::to_string(l)
                            + " of the domain: its cells are too coarse";
-        for(const Point_2d& p : m_locator->loop(l))
-          m_report.refine_requests.emplace_back(p, 0.0);
+        // cells a quarter of its gap to the other loops, on it and halfway across the gap
+        for(const Point_2d& p : m_locator->loop(l)) {
+          const Loop_locator::Hit h = m_locator->closest(p, 1e-6 * m_locator->diagonal(), l, true);
+          const double size = std::isfinite(h.dist) ? 0.25 * h.dist : 0.0;
+          m_report.refine_requests.emplace_back(p, 2 * size);
+          if(size > 0)
+            m_report.refine_requests.emplace_back(Point_2d{ 0.5 * (p.x + h.point.x), 0.5 * (p.y + h.point.y) }, 2 * size);
+        }
       }
     return ok;
   }
