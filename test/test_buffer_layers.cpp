@@ -1,0 +1,864 @@
+// Copyright (c) 2026 Quad_mesher_2 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Quad_mesher_2 developers
+//
+// Buffer stages (paper §4.4-§4.6: TEMPLATES, BUFFER1, BUFFER2): the whole-domain mesh of
+// hand-made and real domains checked independently of the library (exact orientation, own
+// conformity and boundary-loop walk, exact on-boundary tests under Epeck), the stage-by-stage
+// semantics, determinism, bad input, and the stable internal helpers of buffer_layers.h.
+
+#include "qm2_mesh_checks.h"
+#include "qm2_test_kernel.h"
+
+#include <CGAL/Quad_mesher_2/Domain_loops_2.h>
+#include <CGAL/Quad_mesher_2/IO/read_domain.h>
+#include <CGAL/Quad_mesher_2/Meshing_error.h>
+#include <CGAL/Quad_mesher_2/Quadtree_mesher_2.h>
+#include <CGAL/Quad_mesher_2/internal/buffer_layers.h>
+
+#include <CGAL/Polygon_2.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace qm2_buffer_tests {
+
+using qm2_test::K;
+using Point = K::Point_2;
+namespace QM = CGAL::Quad_mesher_2;
+using Domain = QM::Domain_2<K>;
+using Loops = QM::Domain_loops_2<K>;
+using Mesh = QM::Quad_mesh_2<Point>;
+using Mesher = QM::Quadtree_mesher_2<K>;
+using QM::Stage;
+using P2d = QM::internal::Point_2d;
+
+constexpr double pi = 3.14159265358979323846;
+
+// ---- domains -------------------------------------------------------------------------------
+
+// closed polygons given as point lists, plus hole seed points
+Domain polygons(const std::vector<std::vector<Point>>& polys, const std::vector<Point>& holes = {})
+{
+  Domain d;
+  for(const auto& poly : polys) {
+    const std::size_t first = d.points.size();
+    for(std::size_t i = 0; i < poly.size(); ++i) {
+      d.points.push_back(poly[i]);
+      d.segments.push_back({first + i, first + (i + 1) % poly.size()});
+    }
+  }
+  d.holes = holes;
+  return d;
+}
+
+std::vector<Point> rectangle(double x0, double y0, double x1, double y1)
+{
+  return {Point(x0, y0), Point(x1, y0), Point(x1, y1), Point(x0, y1)};
+}
+
+std::vector<Point> disc(double cx, double cy, double r, int n)
+{
+  std::vector<Point> p;
+  for(int i = 0; i < n; ++i)
+    p.emplace_back(cx + r * std::cos(2 * pi * i / n), cy + r * std::sin(2 * pi * i / n));
+  return p;
+}
+
+Domain disc_domain() { return polygons({disc(0, 0, 1, 64)}); }
+
+// a disc with a circular hole (hole seed point at its centre)
+Domain disc_with_hole(double cx = 0, double r = 0.5, int hole_vertices = 32)
+{
+  return polygons({disc(0, 0, 1, 64), disc(cx, 0, r, hole_vertices)}, {Point(cx, 0)});
+}
+
+// a square with a square island (a hole of the domain: nested loops)
+Domain square_with_island(double x0 = 0.2, double x1 = 0.8)
+{
+  return polygons({rectangle(0, 0, 1, 1), rectangle(x0, x0, x1, x1)}, {Point((x0 + x1) / 2, (x0 + x1) / 2)});
+}
+
+// three nested squares: the domain, a hole in it, and a piece of domain in the hole
+Domain three_nested_squares(double s = 1)
+{
+  return polygons({rectangle(0, 0, 3 * s, 3 * s), rectangle(0.5 * s, 0.5 * s, 2.5 * s, 2.5 * s), rectangle(s, s, 2 * s, 2 * s)},
+                  {Point(0.7 * s, 0.7 * s)});
+}
+
+// Two discs of radius 1 around (-1.5, 0) and (1.5, 0) joined by a channel of the given width
+// along y = 0.
+Domain two_discs(double width)
+{
+  std::vector<Point> p;
+  const int n = 64;
+  const double a = std::asin(width / 2);
+  for(int i = 0; i <= n; ++i) {
+    const double t = a + (2 * pi - 2 * a) * i / n;
+    p.emplace_back(-1.5 + std::cos(t), std::sin(t));
+  }
+  for(int i = 0; i <= n; ++i) {
+    const double t = pi + a + (2 * pi - 2 * a) * i / n;
+    p.emplace_back(1.5 + std::cos(t), std::sin(t));
+  }
+  return polygons({p});
+}
+
+// a 32-gon 1e-4 across, 1e5 from the origin
+Domain tiny_far_disc() { return polygons({disc(1e5, 1e5, 0.5e-4, 32)}); }
+
+Domain load(const std::string& relative)
+{
+  Domain d;
+  std::string err;
+  const std::string file = std::string(QM2_SHARED_DATA_DIR) + "/" + relative;
+  EXPECT_TRUE(QM::IO::read_domain(file, d, &err)) << err;
+  return d;
+}
+
+// ---- independent checks of a whole-domain mesh ---------------------------------------------
+
+struct Figures
+{
+  std::size_t quads = 0, vertices = 0;
+  double min_angle = 360, max_angle = 0;
+  double share_45_135 = 0; // of all quad angles
+  double area_error = 0;   // relative
+  std::size_t boundary_cycles = 0;
+  double seconds = 0;
+};
+
+double to_d(const K::FT& x) { return CGAL::to_double(x); }
+
+// interior angle (degrees) of loop vertex k of loop l, the domain on the left
+double interior_angle(const Domain& d, const Loops& loops, std::size_t l, std::size_t k)
+{
+  const auto& v = loops.loops[l].vertices;
+  const std::size_t n = v.size();
+  const Point& a = d.points[v[(k + n - 1) % n]];
+  const Point& b = d.points[v[k]];
+  const Point& c = d.points[v[(k + 1) % n]];
+  const double ux = to_d(a.x()) - to_d(b.x()), uy = to_d(a.y()) - to_d(b.y());
+  const double wx = to_d(c.x()) - to_d(b.x()), wy = to_d(c.y()) - to_d(b.y());
+  // the angle from (b->c) counter-clockwise to (b->a): the domain's side
+  double t = std::atan2(wx * uy - wy * ux, wx * ux + wy * uy) * 180 / pi;
+  return t < 0 ? t + 360 : t;
+}
+
+// Checks every promise of a BUFFER2 mesh of domain `d`; returns the measured figures.
+Figures check_whole_domain(const Domain& d, const Mesh& m, const std::string& name)
+{
+  SCOPED_TRACE(name);
+  Figures f;
+  f.quads = m.quads.size();
+  f.vertices = m.points.size();
+  const Loops loops = QM::extract_loops(d);
+  EXPECT_GT(m.quads.size(), 0u);
+  if(m.quads.empty()) return f;
+
+  // conforming, every vertex used, no duplicates (double-based convexity inside)
+  EXPECT_TRUE(qm2_checks::is_conforming(m));
+  // the boundary edges (used once), found here whatever is_conforming says
+  std::map<std::pair<std::size_t, std::size_t>, int> directed;
+  for(const auto& q : m.quads)
+    for(int c = 0; c < 4; ++c) ++directed[{q[c], q[(c + 1) % 4]}];
+  std::vector<std::pair<std::size_t, std::size_t>> boundary;
+  for(const auto& e : directed)
+    if(directed.count({e.first.second, e.first.first}) == 0) boundary.push_back(e.first);
+  {
+    std::vector<bool> used(m.points.size(), false);
+    for(const auto& q : m.quads)
+      for(int c = 0; c < 4; ++c) used[q[c]] = true;
+    std::size_t unused = 0;
+    for(std::size_t v = 0; v < used.size(); ++v)
+      if(!used[v] && unused++ < 5)
+        ADD_FAILURE() << "vertex " << v << " (" << to_d(m.points[v].x()) << ", " << to_d(m.points[v].y())
+                      << ") is in no quad";
+    EXPECT_EQ(unused, 0u) << "unused vertices";
+  }
+
+  // every quad strictly convex and counter-clockwise: exact orientation of every corner
+  const auto orientation = K().orientation_2_object();
+  std::size_t not_left = 0;
+  for(std::size_t q = 0; q < m.quads.size(); ++q)
+    for(int c = 0; c < 4; ++c)
+      if(orientation(m.points[m.quads[q][c]], m.points[m.quads[q][(c + 1) % 4]], m.points[m.quads[q][(c + 2) % 4]]) !=
+         CGAL::LEFT_TURN) {
+        if(not_left < 5)
+          ADD_FAILURE() << "quad " << q << " corner " << (c + 1) % 4 << " at (" << to_d(m.points[m.quads[q][(c + 1) % 4]].x())
+                        << ", " << to_d(m.points[m.quads[q][(c + 1) % 4]].y()) << ") is not a strict left turn";
+        ++not_left;
+      }
+  EXPECT_EQ(not_left, 0u) << "corners that are not strict left turns (exact)";
+
+  // bounding box and scale of the input
+  double xmin = HUGE_VAL, xmax = -HUGE_VAL, ymin = HUGE_VAL, ymax = -HUGE_VAL;
+  for(const Point& p : d.points) {
+    xmin = (std::min)(xmin, to_d(p.x())); xmax = (std::max)(xmax, to_d(p.x()));
+    ymin = (std::min)(ymin, to_d(p.y())); ymax = (std::max)(ymax, to_d(p.y()));
+  }
+  const double diag = std::hypot(xmax - xmin, ymax - ymin);
+  const double magnitude = (std::max)((std::max)(std::abs(xmin), std::abs(xmax)), (std::max)(std::abs(ymin), std::abs(ymax)));
+
+  // mesh vertices by their double coordinates (for exact look-ups of input points)
+  std::multimap<std::pair<double, double>, std::size_t> by_xy;
+  for(std::size_t v = 0; v < m.points.size(); ++v)
+    by_xy.emplace(std::make_pair(to_d(m.points[v].x()), to_d(m.points[v].y())), v);
+  auto is_mesh_vertex = [&](const Point& p) {
+    auto range = by_xy.equal_range(std::make_pair(to_d(p.x()), to_d(p.y())));
+    for(auto it = range.first; it != range.second; ++it)
+      if(m.points[it->second] == p) return true;
+    return false;
+  };
+
+  // every input corner (interior angle outside [160, 200]) is a mesh vertex, exactly
+  std::size_t corners = 0, missing = 0;
+  for(std::size_t l = 0; l < loops.loops.size(); ++l)
+    for(std::size_t k = 0; k < loops.loops[l].vertices.size(); ++k) {
+      const double a = interior_angle(d, loops, l, k);
+      if(a >= 160 - 1e-9 && a <= 200 + 1e-9) continue;
+      ++corners;
+      const Point& p = d.points[loops.loops[l].vertices[k]];
+      if(!is_mesh_vertex(p)) {
+        if(missing < 5)
+          ADD_FAILURE() << "input corner " << loops.loops[l].vertices[k] << " (" << to_d(p.x()) << ", " << to_d(p.y())
+                        << "), interior angle " << a << ", is not a mesh vertex";
+        ++missing;
+      }
+    }
+  EXPECT_EQ(missing, 0u) << "of " << corners << " input corners";
+
+  // every boundary vertex lies on the input boundary (exactly under Epeck; within 1e-12 of
+  // the coordinates' magnitude under Epick), and both ends of a boundary edge on one loop
+  std::vector<K::Segment_2> segs;
+  std::vector<std::size_t> seg_loop;
+  for(std::size_t l = 0; l < loops.loops.size(); ++l) {
+    const auto& v = loops.loops[l].vertices;
+    for(std::size_t k = 0; k < v.size(); ++k) {
+      segs.emplace_back(d.points[v[k]], d.points[v[(k + 1) % v.size()]]);
+      seg_loop.push_back(l);
+    }
+  }
+  const double tol = 1e-12 * (diag + magnitude);
+  std::map<std::size_t, std::set<std::size_t>> loops_of; // boundary vertex -> loops it lies on
+  std::size_t off_boundary = 0;
+  auto locate = [&](std::size_t v) {
+    if(loops_of.count(v)) return;
+    std::set<std::size_t>& on = loops_of[v];
+    const Point& p = m.points[v];
+    const double px = to_d(p.x()), py = to_d(p.y());
+    for(std::size_t s = 0; s < segs.size(); ++s) {
+      const double ax = to_d(segs[s].source().x()), ay = to_d(segs[s].source().y());
+      const double bx = to_d(segs[s].target().x()), by = to_d(segs[s].target().y());
+      if(px < (std::min)(ax, bx) - 1e-6 * diag || px > (std::max)(ax, bx) + 1e-6 * diag ||
+         py < (std::min)(ay, by) - 1e-6 * diag || py > (std::max)(ay, by) + 1e-6 * diag)
+        continue;
+      bool hit;
+      if(qm2_test::exact_constructions)
+        hit = segs[s].has_on(p); // exact
+      else
+        hit = std::sqrt(to_d(CGAL::squared_distance(p, segs[s]))) <= tol;
+      if(hit) on.insert(seg_loop[s]);
+    }
+    if(on.empty()) {
+      double nearest = HUGE_VAL;
+      for(const auto& seg : segs) nearest = (std::min)(nearest, std::sqrt(to_d(CGAL::squared_distance(p, seg))));
+      if(off_boundary < 5)
+        ADD_FAILURE() << "mesh boundary vertex " << v << " (" << px << ", " << py
+                      << ") is not on the input boundary (" << nearest << " from it)";
+      ++off_boundary;
+    }
+  };
+  std::size_t split_edges = 0, far_chords = 0;
+  for(const auto& e : boundary) {
+    locate(e.first);
+    locate(e.second);
+    const auto& A = loops_of[e.first];
+    const auto& B = loops_of[e.second];
+    bool common = false;
+    for(std::size_t l : A) common = common || B.count(l) != 0;
+    if(!A.empty() && !B.empty() && !common) ++split_edges;
+    // the edge is a chord of its loop: its midpoint within 1e-3 of the diagonal of it
+    const double mx = (to_d(m.points[e.first].x()) + to_d(m.points[e.second].x())) / 2;
+    const double my = (to_d(m.points[e.first].y()) + to_d(m.points[e.second].y())) / 2;
+    double best = HUGE_VAL;
+    for(const auto& s : segs) best = (std::min)(best, std::sqrt(to_d(CGAL::squared_distance(Point(mx, my), s))));
+    if(best > 1e-3 * diag * (1 + 1e-9)) ++far_chords;
+  }
+  EXPECT_EQ(off_boundary, 0u) << "mesh boundary vertices off the input boundary";
+  EXPECT_EQ(split_edges, 0u) << "mesh boundary edges joining two different loops";
+  EXPECT_EQ(far_chords, 0u) << "mesh boundary edges farther than 1e-3 of the diagonal from the input boundary";
+
+  // the boundary is simple closed loops, as many as the domain's, turning the same way
+  std::map<std::size_t, std::size_t> next;
+  std::map<std::size_t, int> into;
+  std::size_t branching = 0;
+  for(const auto& e : boundary) {
+    if(next.count(e.first)) ++branching;
+    next[e.first] = e.second;
+    ++into[e.second];
+  }
+  for(const auto& x : into) branching += x.second > 1 ? 1 : 0;
+  EXPECT_EQ(branching, 0u) << "boundary vertices with more than two boundary edges";
+  std::set<std::size_t> seen;
+  std::size_t ccw = 0, cw = 0;
+  for(const auto& e : boundary) {
+    if(seen.count(e.first)) continue;
+    double area2 = 0;
+    const Point& o = m.points[e.first];
+    std::size_t v = e.first, steps = 0;
+    while(!seen.count(v) && next.count(v) && steps <= boundary.size()) {
+      seen.insert(v);
+      const std::size_t w = next[v];
+      area2 += to_d((m.points[v].x() - o.x()) * (m.points[w].y() - o.y()) - (m.points[w].x() - o.x()) * (m.points[v].y() - o.y()));
+      v = w;
+      ++steps;
+    }
+    ++f.boundary_cycles;
+    (area2 > 0 ? ccw : cw) += 1;
+  }
+  std::size_t outer = 0;
+  for(const auto& l : loops.loops) outer += l.is_outer ? 1 : 0;
+  EXPECT_EQ(f.boundary_cycles, loops.loops.size()) << "mesh boundary loops vs the domain's";
+  EXPECT_EQ(ccw, outer) << "counter-clockwise mesh boundary loops vs the domain's outer loops";
+  EXPECT_EQ(cw, loops.loops.size() - outer) << "clockwise mesh boundary loops vs the domain's holes";
+
+  // area: within 1e-3 relative of the domain's (chords may cut off vertices turning < 20°)
+  const double domain_area = to_d(QM::domain_area(d, loops));
+  double area = 0;
+  for(std::size_t q = 0; q < m.quads.size(); ++q) area += qm2_checks::signed_area(m, q);
+  f.area_error = std::abs(area - domain_area) / domain_area;
+  EXPECT_LE(f.area_error, 1e-3) << "mesh area " << area << " vs domain area " << domain_area;
+
+  // angles
+  std::size_t good = 0, all = 0;
+  for(std::size_t q = 0; q < m.quads.size(); ++q)
+    for(int c = 0; c < 4; ++c) {
+      const double a = qm2_checks::corner_angle(m, q, c);
+      f.min_angle = (std::min)(f.min_angle, a);
+      f.max_angle = (std::max)(f.max_angle, a);
+      good += a >= 45 - 1e-9 && a <= 135 + 1e-9 ? 1 : 0;
+      ++all;
+    }
+  f.share_45_135 = double(good) / double(all);
+  return f;
+}
+
+void print(const std::string& name, const Figures& f, int rounds)
+{
+  std::printf("[buffer] %-28s %s: %zu quads, %zu vertices, angles [%.2f, %.2f], in [45,135]: %.4f, "
+              "area error %.2e, %zu loops, %d round(s), %.3f s\n",
+              name.c_str(), qm2_test::exact_constructions ? "epeck" : "epick", f.quads, f.vertices, f.min_angle,
+              f.max_angle, f.share_45_135, f.area_error, f.boundary_cycles, rounds, f.seconds);
+}
+
+// Meshes `d` to BUFFER2 and checks it; returns the figures.
+Figures mesh_and_check(const Domain& d, const std::string& name, const QM::Mesh_criteria_2<K>& criteria = QM::Mesh_criteria_2<K>())
+{
+  Mesher mesher(d, criteria);
+  const auto start = std::chrono::steady_clock::now();
+  Mesh m;
+  try {
+    m = mesher.run(Stage::BUFFER2);
+  } catch(const QM::Meshing_error& e) {
+    ADD_FAILURE() << name << ": " << e.what();
+    return Figures();
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  Figures f = check_whole_domain(d, m, name);
+  f.seconds = seconds;
+  print(name, f, mesher.rounds());
+  return f;
+}
+
+// ---- 1. BUFFER2 meshes the whole domain -----------------------------------------------------
+//
+// Validity, conformity, corners, boundary and area are the product's promise and are checked
+// in full on every domain. Angles: only the disc has every angle in [45, 135] today (asserted);
+// elsewhere the share of all quad angles in [45, 135] is asserted against the share measured
+// with buffer_layers.h of commit 9d349a3 (+ work in progress), minus a margin of about 0.02:
+// a regression of the buffer layers' angles fails these.
+
+TEST(Buffer_layers, disc_is_meshed_with_all_angles_in_45_135)
+{
+  const Figures f = mesh_and_check(disc_domain(), "disc");
+  EXPECT_GE(f.min_angle, 45 - 1e-9);
+  EXPECT_LE(f.max_angle, 135 + 1e-9);
+}
+
+TEST(Buffer_layers, disc_with_a_circular_hole)
+{
+  // centred and off-centre holes, 32- and 64-gons
+  for(const auto& h : std::vector<std::array<double, 3>>{{0, 0.4, 32}, {0.1, 0.3, 64}, {0.1, 0.5, 64}}) {
+    const Figures f = mesh_and_check(disc_with_hole(h[0], h[1], int(h[2])),
+                                     "disc with hole " + std::to_string(h[0]) + " " + std::to_string(h[1]) + " " +
+                                       std::to_string(int(h[2])));
+    EXPECT_GE(f.share_45_135, 0.98); // measured 1.0000, 0.9948, 0.9979
+  }
+}
+
+TEST(Buffer_layers, square_with_a_square_island)
+{
+  const Figures f = mesh_and_check(square_with_island(), "square with island");
+  EXPECT_GE(f.share_45_135, 0.96); // measured 0.9814 (0.9988 at 9d349a3)
+}
+
+TEST(Buffer_layers, three_nested_squares)
+{
+  const Figures f = mesh_and_check(three_nested_squares(), "three nested squares");
+  EXPECT_GE(f.share_45_135, 0.94); // measured 0.9650
+  // closer loops (at 9d349a3: "1 buffer quads are not convex ... after 8 refinement rounds")
+  const Figures g = mesh_and_check(polygons({rectangle(0, 0, 1, 1), rectangle(0.2, 0.2, 0.8, 0.8), rectangle(0.4, 0.4, 0.6, 0.6)},
+                                            {Point(0.3, 0.3)}),
+                                   "unit square, hole, island");
+  EXPECT_GE(g.share_45_135, 0.95); // measured 0.9772
+}
+
+TEST(Buffer_layers, two_discs_joined_by_a_thin_channel)
+{
+  // (0.1 at 9d349a3: "1 buffer quads are not convex ... after 8 refinement rounds")
+  for(double width : {0.05, 0.1, 0.3}) {
+    const Figures f = mesh_and_check(two_discs(width), "two discs, channel " + std::to_string(width));
+    EXPECT_GE(f.share_45_135, 0.98); // measured 0.9999 (0.05), 0.9998 (0.1), 1.0000 (0.3)
+  }
+}
+
+TEST(Buffer_layers, tiny_domain_far_from_the_origin)
+{
+  const Figures f = mesh_and_check(tiny_far_disc(), "1e-4 disc at 1e5");
+  EXPECT_GE(f.share_45_135, 0.89); // measured 0.9591 (Epick), 0.9440 (Epeck)
+}
+
+TEST(Buffer_layers, triangle_A)
+{
+  const Figures f = mesh_and_check(load("triangle_A/triangle_A.poly"), "triangle A");
+  EXPECT_GE(f.share_45_135, 0.98); // measured 0.9979
+}
+
+TEST(Buffer_layers, naca0012)
+{
+  const Figures f = mesh_and_check(load("naca0012/naca0012.poly"), "naca0012");
+  EXPECT_GE(f.share_45_135, 0.98); // measured 0.9942
+}
+
+// Known failures of the buffer stages (run with --gtest_also_run_disabled_tests): each input is
+// a plain domain that BUFFER2 should mesh, whose mesh breaks a promise. Re-enable when fixed.
+//
+// Both kernels: "mesh boundary vertex 734 (0.346965, 0.230130) is not on the input boundary
+// (0.0612 from it)", and 2 boundary edges farther than 1e-3 of the diagonal from it. (At
+// 9d349a3 it threw "1 buffer quads are not convex ... after 8 refinement rounds".)
+TEST(Buffer_layers, DISABLED_disc_with_an_off_centre_32_gon_hole)
+{
+  mesh_and_check(disc_with_hole(0.1, 0.4, 32), "disc with hole 0.1 0.4 32");
+}
+
+// Both kernels: "mesh boundary vertex 1037 (0.472949, -0.144060) is not on the input boundary
+// (1.6e-4 from it)". (At 9d349a3 Epick passed and Epeck found that vertex 7e-18 off the
+// boundary: a new boundary point rounded to doubles.)
+TEST(Buffer_layers, DISABLED_disc_with_an_off_centre_64_gon_hole)
+{
+  mesh_and_check(disc_with_hole(0.1, 0.4, 64), "disc with hole 0.1 0.4 64");
+}
+
+// Lake Superior: too slow for a unit test (Epick: 7871 quads, 2 rounds, 2.2 s; at 9d349a3
+// 15.7 s, nearly all in Buffer_layers::pair_strip, and a vertex in no quad).
+TEST(Buffer_layers, DISABLED_lake_superior)
+{
+  const Figures f = mesh_and_check(load("lake_superior/lake_superior.poly"), "lake superior");
+  EXPECT_GE(f.share_45_135, 0.97);
+  EXPECT_LT(f.seconds, 2.0);
+}
+
+// ---- 2. stage semantics ---------------------------------------------------------------------
+
+// the directed boundary edges (used by one quad) of a quad list
+std::vector<std::pair<std::size_t, std::size_t>> boundary_edges(const std::vector<std::array<std::size_t, 4>>& quads)
+{
+  std::set<std::pair<std::size_t, std::size_t>> directed;
+  for(const auto& q : quads)
+    for(int c = 0; c < 4; ++c) directed.insert({q[c], q[(c + 1) % 4]});
+  std::vector<std::pair<std::size_t, std::size_t>> b;
+  for(const auto& e : directed)
+    if(!directed.count({e.second, e.first})) b.push_back(e);
+  return b;
+}
+
+// exact: every corner of every quad a strict left turn
+std::size_t corners_not_left(const Mesh& m)
+{
+  const auto orientation = K().orientation_2_object();
+  std::size_t bad = 0;
+  for(const auto& q : m.quads)
+    for(int c = 0; c < 4; ++c)
+      bad += orientation(m.points[q[c]], m.points[q[(c + 1) % 4]], m.points[q[(c + 2) % 4]]) != CGAL::LEFT_TURN;
+  return bad;
+}
+
+// the buffer-side angle at each core boundary vertex (degrees; the core on the left of its
+// boundary, so the buffer is on the right)
+std::vector<double> buffer_side_angles(const Mesh& m)
+{
+  const auto b = boundary_edges(m.quads);
+  std::map<std::size_t, std::size_t> next, prev;
+  for(const auto& e : b) {
+    next[e.first] = e.second;
+    prev[e.second] = e.first;
+  }
+  std::vector<double> angles;
+  for(const auto& e : b)
+    angles.push_back(QM::internal::right_side_angle(QM::internal::to_point_2d(m.points[prev[e.first]]),
+                                                    QM::internal::to_point_2d(m.points[e.first]),
+                                                    QM::internal::to_point_2d(m.points[e.second])));
+  return angles;
+}
+
+void check_stages(const Domain& d, const std::string& name, std::size_t min_moved)
+{
+  SCOPED_TRACE(name);
+  Mesher mesher(d);
+  const Mesh clearance = mesher.run(Stage::CLEARANCE);
+  ASSERT_EQ(mesher.rounds(), 1);
+  ASSERT_TRUE(qm2_checks::is_conforming(clearance));
+
+  // TEMPLATES: the same quads, the notch vertices moved into the buffer, core angles kept
+  const Mesh templates = mesher.run(Stage::TEMPLATES);
+  ASSERT_EQ(mesher.rounds(), 1); // else the quadtree differs and nothing below compares
+  EXPECT_EQ(templates.quads, clearance.quads);
+  ASSERT_EQ(templates.points.size(), clearance.points.size());
+  EXPECT_TRUE(qm2_checks::is_conforming(templates));
+  EXPECT_EQ(corners_not_left(templates), 0u);
+  const auto range = qm2_checks::angle_range(templates);
+  EXPECT_GE(range.min, 45 - 1e-9);
+  EXPECT_LE(range.max, 135 + 1e-9);
+  std::set<std::size_t> on_boundary;
+  for(const auto& e : boundary_edges(clearance.quads)) on_boundary.insert(e.first);
+  std::size_t moved = 0, moved_inside = 0;
+  for(std::size_t v = 0; v < clearance.points.size(); ++v)
+    if(templates.points[v] != clearance.points[v]) {
+      ++moved;
+      moved_inside += on_boundary.count(v) == 0;
+    }
+  const std::size_t reported = mesher.buffer_report().moved_notches;
+  EXPECT_EQ(moved_inside, 0u) << "interior core vertices moved";
+  EXPECT_GE(moved, min_moved);
+  EXPECT_GE(reported, moved); // a vertex may move in more than one pass
+  EXPECT_LE(reported, 3 * moved);
+  std::size_t notches_before = 0, notches_after = 0;
+  for(double a : buffer_side_angles(clearance)) notches_before += a < 112.5 - 1e-9;
+  for(double a : buffer_side_angles(templates)) notches_after += a < 112.5 - 1e-9;
+  EXPECT_LT(notches_after, notches_before);
+  std::printf("[buffer] stages %-20s %s: %zu core quads, %zu boundary vertices, %zu moved (%zu reported), "
+              "notches %zu -> %zu\n",
+              name.c_str(), qm2_test::exact_constructions ? "epeck" : "epick", clearance.quads.size(),
+              on_boundary.size(), moved, reported, notches_before, notches_after);
+
+  // BUFFER1: one quad per core boundary vertex, on the core's boundary, off the input's
+  const Mesh first = mesher.run(Stage::BUFFER1);
+  ASSERT_EQ(mesher.rounds(), 1);
+  const std::size_t added = mesher.buffer_report().first_layer_quads;
+  EXPECT_EQ(added, on_boundary.size());
+  ASSERT_EQ(first.quads.size(), clearance.quads.size() + added);
+  EXPECT_EQ(first.points.size(), clearance.points.size() + added);
+  EXPECT_TRUE(std::equal(clearance.quads.begin(), clearance.quads.end(), first.quads.begin()));
+  EXPECT_TRUE(qm2_checks::is_conforming(first));
+  EXPECT_EQ(corners_not_left(first), 0u);
+  // each new quad has two core boundary vertices and two new ones
+  for(std::size_t q = clearance.quads.size(); q < first.quads.size(); ++q) {
+    int core = 0;
+    for(int c = 0; c < 4; ++c) core += on_boundary.count(first.quads[q][c]) ? 1 : 0;
+    EXPECT_EQ(core, 2) << "first-layer quad " << q;
+  }
+  // its boundary neither touches nor crosses the input boundary (exact predicates), and
+  // every new vertex is strictly inside the domain
+  const Loops loops = QM::extract_loops(d);
+  std::vector<K::Segment_2> segs;
+  for(const auto& s : d.segments) segs.emplace_back(d.points[s[0]], d.points[s[1]]);
+  std::size_t touching = 0;
+  for(const auto& e : boundary_edges(first.quads)) {
+    const K::Segment_2 edge(first.points[e.first], first.points[e.second]);
+    for(const auto& s : segs) touching += CGAL::do_intersect(edge, s) ? 1 : 0;
+  }
+  EXPECT_EQ(touching, 0u) << "first-layer boundary edge / input segment pairs that meet";
+  std::vector<CGAL::Polygon_2<K>> polys;
+  for(const auto& l : loops.loops) polys.push_back(QM::loop_polygon_2(d, l));
+  std::size_t outside = 0;
+  for(std::size_t v = clearance.points.size(); v < first.points.size(); ++v) {
+    int inside = 0;
+    for(const auto& poly : polys) inside += poly.bounded_side(first.points[v]) == CGAL::ON_BOUNDED_SIDE;
+    outside += inside % 2 == 0;
+  }
+  EXPECT_EQ(outside, 0u) << "first buffer points not strictly inside the domain";
+
+  // BUFFER2: the whole domain
+  const Mesh whole = mesher.run(Stage::BUFFER2);
+  const Figures f = check_whole_domain(d, whole, name + " buffer2");
+  EXPECT_GT(f.quads, first.quads.size());
+}
+
+TEST(Buffer_layers, stages_on_the_disc)
+{
+  check_stages(disc_domain(), "disc", 8);
+}
+
+TEST(Buffer_layers, stages_on_the_square_with_an_island)
+{
+  check_stages(square_with_island(), "square with island", 4);
+}
+
+TEST(Buffer_layers, stages_on_triangle_A)
+{
+  check_stages(load("triangle_A/triangle_A.poly"), "triangle A", 4);
+}
+
+// ---- 3. determinism -------------------------------------------------------------------------
+// (each binary has one kernel, so Epick and Epeck are not compared here: two runs must give
+// the same mesh, point for point)
+
+void check_deterministic(const Domain& d, const std::string& name, bool third_run = false)
+{
+  SCOPED_TRACE(name);
+  Mesher a(d), b(d);
+  const Mesh ma = a.run(Stage::BUFFER2);
+  const Mesh mb = b.run(Stage::BUFFER2);
+  EXPECT_EQ(a.rounds(), b.rounds());
+  EXPECT_EQ(ma.quads, mb.quads);
+  ASSERT_EQ(ma.points.size(), mb.points.size());
+  std::size_t differ = 0;
+  for(std::size_t v = 0; v < ma.points.size(); ++v) differ += ma.points[v] != mb.points[v];
+  EXPECT_EQ(differ, 0u);
+  if(third_run) { // on the same mesher object: nothing of the first run leaks into it
+    const Mesh mc = a.run(Stage::BUFFER2);
+    EXPECT_EQ(ma.quads, mc.quads);
+    ASSERT_EQ(ma.points.size(), mc.points.size());
+    for(std::size_t v = 0; v < ma.points.size(); ++v) differ += ma.points[v] != mc.points[v];
+    EXPECT_EQ(differ, 0u);
+  }
+  std::printf("[buffer] deterministic %-20s %s: %zu quads, %zu vertices\n", name.c_str(),
+              qm2_test::exact_constructions ? "epeck" : "epick", ma.quads.size(), ma.points.size());
+}
+
+TEST(Buffer_layers, two_runs_give_the_same_mesh_disc)
+{
+  check_deterministic(disc_domain(), "disc", true);
+}
+
+TEST(Buffer_layers, two_runs_give_the_same_mesh_disc_with_hole)
+{
+  check_deterministic(disc_with_hole(0.1, 0.5, 64), "disc with hole");
+}
+
+TEST(Buffer_layers, two_runs_give_the_same_mesh_triangle_A)
+{
+  check_deterministic(load("triangle_A/triangle_A.poly"), "triangle A");
+}
+
+// Scaling by powers of two and translating by dyadic offsets (exact in doubles: the disc's
+// points are on the 2^-20 grid) keep the quadtree's lattice: the same topology.
+TEST(Buffer_layers, power_of_two_scaling_and_translation_give_the_same_topology)
+{
+  auto grid_disc = [](double cx, double cy, double scale) {
+    std::vector<Point> p;
+    for(int i = 0; i < 32; ++i) {
+      const double x = std::round(std::cos(2 * pi * i / 32) * 0x1p20) * 0x1p-20;
+      const double y = std::round(std::sin(2 * pi * i / 32) * 0x1p20) * 0x1p-20;
+      p.emplace_back(cx + scale * x, cy + scale * y);
+    }
+    return polygons({p});
+  };
+  const Domain base_domain = grid_disc(0, 0, 1);
+  Mesher base_mesher(base_domain);
+  const Mesh base = base_mesher.run(Stage::BUFFER2);
+  ASSERT_GT(base.quads.size(), 0u);
+  for(const auto& t : std::vector<std::array<double, 3>>{{1, 1024, -512}, {1024, 0, 0}, {0x1p-14, 3, 0.5}}) {
+    const Domain d = grid_disc(t[1], t[2], t[0]);
+    Mesher mesher(d);
+    const Mesh m = mesher.run(Stage::BUFFER2);
+    EXPECT_EQ(m.quads, base.quads) << "scale " << t[0] << ", translation (" << t[1] << ", " << t[2] << ")";
+    EXPECT_EQ(m.points.size(), base.points.size());
+    check_whole_domain(d, m, "scaled disc " + std::to_string(t[0]));
+  }
+}
+
+// ---- 4. bad input ---------------------------------------------------------------------------
+
+TEST(Buffer_layers, point_cloud_is_an_error)
+{
+  Domain d;
+  for(const Point& p : disc(0, 0, 1, 16)) d.points.push_back(p);
+  Mesher mesher(d);
+  EXPECT_THROW(mesher.run(Stage::BUFFER2), QM::Meshing_error);
+  EXPECT_THROW(mesher.run(Stage::BUFFER1), QM::Meshing_error);
+  EXPECT_THROW(mesher.run(Stage::TEMPLATES), QM::Meshing_error);
+}
+
+TEST(Buffer_layers, self_intersecting_loop_is_an_error_naming_a_segment)
+{
+  // a bow tie: segments 0 (0,0)-(1,1) and 2 (1,0)-(0,1) cross at (0.5, 0.5)
+  const Domain d = polygons({{Point(0, 0), Point(1, 1), Point(1, 0), Point(0, 1)}});
+  Mesher mesher(d);
+  try {
+    mesher.run(Stage::BUFFER2);
+    ADD_FAILURE() << "no error for a self-intersecting loop";
+  } catch(const QM::Meshing_error& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("segment"), std::string::npos) << msg;
+    std::printf("[buffer] bow tie: %s\n", msg.c_str());
+  }
+}
+
+// ---- 5. internal helpers --------------------------------------------------------------------
+
+// an nx-by-ny grid of unit quads, counter-clockwise, vertex (i, j) at j * (nx + 1) + i,
+// without the quads for which skip(i, j) holds
+template <class Skip>
+std::vector<std::array<std::size_t, 4>> grid_quads(int nx, int ny, Skip skip)
+{
+  std::vector<std::array<std::size_t, 4>> quads;
+  auto v = [nx](int i, int j) { return std::size_t(j * (nx + 1) + i); };
+  for(int j = 0; j < ny; ++j)
+    for(int i = 0; i < nx; ++i)
+      if(!skip(i, j)) quads.push_back({v(i, j), v(i + 1, j), v(i + 1, j + 1), v(i, j + 1)});
+  return quads;
+}
+
+double cycle_area(const std::vector<std::size_t>& c, int nx)
+{
+  double a = 0;
+  for(std::size_t k = 0; k < c.size(); ++k) {
+    const std::size_t p = c[k], q = c[(k + 1) % c.size()];
+    const double px = double(p % (nx + 1)), py = double(p / (nx + 1));
+    const double qx = double(q % (nx + 1)), qy = double(q / (nx + 1));
+    a += px * qy - qx * py;
+  }
+  return a / 2;
+}
+
+// consecutive cycle vertices are joined by a boundary edge, in its direction
+void expect_follows_edges(const std::vector<std::size_t>& c, const std::vector<std::array<std::size_t, 4>>& quads)
+{
+  const auto b = boundary_edges(quads);
+  const std::set<std::pair<std::size_t, std::size_t>> edges(b.begin(), b.end());
+  for(std::size_t k = 0; k < c.size(); ++k)
+    EXPECT_TRUE(edges.count({c[k], c[(k + 1) % c.size()]})) << c[k] << " -> " << c[(k + 1) % c.size()];
+}
+
+TEST(Buffer_layers_helpers, mesh_boundary_cycles_of_a_2x2_grid)
+{
+  const auto quads = grid_quads(2, 2, [](int, int) { return false; });
+  const auto cycles = QM::internal::mesh_boundary_cycles(quads, 9);
+  ASSERT_EQ(cycles.size(), 1u);
+  ASSERT_EQ(cycles[0].size(), 8u);
+  EXPECT_EQ(std::set<std::size_t>(cycles[0].begin(), cycles[0].end()),
+            (std::set<std::size_t>{0, 1, 2, 3, 5, 6, 7, 8})); // all but the centre, 4
+  EXPECT_DOUBLE_EQ(cycle_area(cycles[0], 2), 4.0);            // counter-clockwise
+  expect_follows_edges(cycles[0], quads);
+}
+
+TEST(Buffer_layers_helpers, mesh_boundary_cycles_of_an_annulus)
+{
+  // a 3x3 grid without its centre quad: the outer cycle (12 vertices) counter-clockwise, the
+  // inner one (4) clockwise
+  const auto quads = grid_quads(3, 3, [](int i, int j) { return i == 1 && j == 1; });
+  const auto cycles = QM::internal::mesh_boundary_cycles(quads, 16);
+  ASSERT_EQ(cycles.size(), 2u);
+  const auto& outer = cycles[0].size() > cycles[1].size() ? cycles[0] : cycles[1];
+  const auto& inner = cycles[0].size() > cycles[1].size() ? cycles[1] : cycles[0];
+  EXPECT_EQ(outer.size(), 12u);
+  ASSERT_EQ(inner.size(), 4u);
+  EXPECT_DOUBLE_EQ(cycle_area(outer, 3), 9.0);
+  EXPECT_DOUBLE_EQ(cycle_area(inner, 3), -1.0);
+  EXPECT_EQ(std::set<std::size_t>(inner.begin(), inner.end()), (std::set<std::size_t>{5, 6, 9, 10}));
+  expect_follows_edges(outer, quads);
+  expect_follows_edges(inner, quads);
+  // unused points are on no cycle
+  EXPECT_EQ(QM::internal::mesh_boundary_cycles(quads, 20).size(), 2u);
+}
+
+TEST(Buffer_layers_helpers, loop_locator_closest)
+{
+  // the unit square (counter-clockwise) and a small square far to the right
+  QM::internal::Loop_locator locator({{P2d{0, 0}, P2d{1, 0}, P2d{1, 1}, P2d{0, 1}},
+                                      {P2d{10, 0}, P2d{11, 0}, P2d{11, 1}, P2d{10, 1}}});
+  EXPECT_DOUBLE_EQ(locator.length(0), 4.0);
+  EXPECT_DOUBLE_EQ(locator.arc(0, 2), 2.0);
+
+  auto h = locator.closest(P2d{0.5, -0.3}, 0.5);
+  EXPECT_EQ(h.loop, 0u);
+  EXPECT_EQ(h.edge, 0u);
+  EXPECT_DOUBLE_EQ(h.t, 0.5);
+  EXPECT_DOUBLE_EQ(h.dist, 0.3);
+  EXPECT_DOUBLE_EQ(h.point.x, 0.5);
+  EXPECT_DOUBLE_EQ(h.point.y, 0.0);
+  EXPECT_DOUBLE_EQ(locator.param(h), 0.5);
+
+  // inside, nearest the top edge (edge 2 runs from (1,1) to (0,1))
+  h = locator.closest(P2d{0.25, 0.9}, 0.01); // a radius too small: the search widens
+  EXPECT_EQ(h.loop, 0u);
+  EXPECT_EQ(h.edge, 2u);
+  EXPECT_NEAR(h.t, 0.75, 1e-15);
+  EXPECT_NEAR(h.dist, 0.1, 1e-15);
+  EXPECT_NEAR(locator.param(h), 2.75, 1e-15);
+
+  // beyond a corner: the corner itself
+  h = locator.closest(P2d{2, 2}, 0.1);
+  EXPECT_EQ(h.loop, 0u);
+  EXPECT_DOUBLE_EQ(h.dist, std::sqrt(2.0));
+  EXPECT_DOUBLE_EQ(h.point.x, 1.0);
+  EXPECT_DOUBLE_EQ(h.point.y, 1.0);
+
+  // nearer the second loop, or restricted to the first
+  h = locator.closest(P2d{9, 0.5}, 1);
+  EXPECT_EQ(h.loop, 1u);
+  EXPECT_EQ(h.edge, 3u);
+  EXPECT_DOUBLE_EQ(h.dist, 1.0);
+  h = locator.closest(P2d{9, 0.5}, 1, 0);
+  EXPECT_EQ(h.loop, 0u);
+  EXPECT_EQ(h.edge, 1u);
+  EXPECT_DOUBLE_EQ(h.dist, 8.0);
+}
+
+TEST(Buffer_layers_helpers, right_side_angle)
+{
+  using QM::internal::right_side_angle;
+  EXPECT_NEAR(right_side_angle(P2d{0, 0}, P2d{1, 0}, P2d{2, 0}), 180.0, 1e-12); // straight
+  EXPECT_NEAR(right_side_angle(P2d{0, 0}, P2d{1, 0}, P2d{1, 1}), 270.0, 1e-12); // left turn
+  EXPECT_NEAR(right_side_angle(P2d{0, 0}, P2d{1, 0}, P2d{1, -1}), 90.0, 1e-12); // right turn
+  EXPECT_NEAR(right_side_angle(P2d{0, 0}, P2d{1, 0}, P2d{2, -1}), 135.0, 1e-12);
+  EXPECT_NEAR(right_side_angle(P2d{0, 0}, P2d{1, 0}, P2d{0, 1}), 315.0, 1e-12);
+  // the angle on the right plus the one on the left is 360
+  EXPECT_NEAR(right_side_angle(P2d{0, 0}, P2d{3, 1}, P2d{2, 5}) + right_side_angle(P2d{2, 5}, P2d{3, 1}, P2d{0, 0}),
+              360.0, 1e-12);
+  // a counter-clockwise square: 90 degrees inside (left), 270 outside (right)
+  EXPECT_NEAR(right_side_angle(P2d{1, 1}, P2d{0, 1}, P2d{0, 0}), 270.0, 1e-12);
+}
+
+TEST(Buffer_layers_helpers, right_bisector)
+{
+  using QM::internal::right_bisector;
+  const double r = std::sqrt(0.5);
+  auto expect = [](P2d v, double x, double y) {
+    EXPECT_NEAR(v.x, x, 1e-15);
+    EXPECT_NEAR(v.y, y, 1e-15);
+  };
+  expect(right_bisector(P2d{0, 0}, P2d{1, 0}, P2d{2, 0}), 0, -1);   // straight: the right normal
+  expect(right_bisector(P2d{0, 0}, P2d{1, 0}, P2d{1, 1}), r, -r);   // left turn: the reflex side
+  expect(right_bisector(P2d{0, 0}, P2d{1, 0}, P2d{1, -1}), -r, -r); // right turn: into the corner
+  expect(right_bisector(P2d{0, 0}, P2d{5, 0}, P2d{0, 0}), -1, 0);   // a spike: back along a -> b
+  // unit length whatever the edge lengths, and it halves the angle on the right
+  const P2d a{-3, 1}, b{0.5, 0.25}, c{2, 7};
+  const P2d d = right_bisector(a, b, c);
+  EXPECT_NEAR(std::hypot(d.x, d.y), 1.0, 1e-15);
+  const P2d tip{b.x + d.x, b.y + d.y};
+  EXPECT_NEAR(QM::internal::right_side_angle(a, b, tip), QM::internal::right_side_angle(a, b, c) / 2, 1e-9);
+}
+
+} // namespace qm2_buffer_tests
