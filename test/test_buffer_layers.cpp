@@ -450,21 +450,16 @@ TEST(Buffer_layers, naca0012)
   EXPECT_GE(f.share_45_135, 0.98); // measured 0.9942
 }
 
-// Known failures of the buffer stages (run with --gtest_also_run_disabled_tests): each input is
-// a plain domain that BUFFER2 should mesh, whose mesh breaks a promise. Re-enable when fixed.
-//
-// Both kernels: "mesh boundary vertex 734 (0.346965, 0.230130) is not on the input boundary
-// (0.0612 from it)", and 2 boundary edges farther than 1e-3 of the diagonal from it. (At
-// 9d349a3 it threw "1 buffer quads are not convex ... after 8 refinement rounds".)
-TEST(Buffer_layers, DISABLED_disc_with_an_off_centre_32_gon_hole)
+// Off-centre holes once left a new boundary point off the input boundary: on a chord across a
+// left-out vertex (0.061 from the boundary), then, under Epeck, rounded to doubles (7e-18).
+// New boundary points now always lie on an input edge, and a node is taken out of the chain
+// only while the chord across it stays within the tolerance.
+TEST(Buffer_layers, disc_with_an_off_centre_32_gon_hole)
 {
   mesh_and_check(disc_with_hole(0.1, 0.4, 32), "disc with hole 0.1 0.4 32");
 }
 
-// Both kernels: "mesh boundary vertex 1037 (0.472949, -0.144060) is not on the input boundary
-// (1.6e-4 from it)". (At 9d349a3 Epick passed and Epeck found that vertex 7e-18 off the
-// boundary: a new boundary point rounded to doubles.)
-TEST(Buffer_layers, DISABLED_disc_with_an_off_centre_64_gon_hole)
+TEST(Buffer_layers, disc_with_an_off_centre_64_gon_hole)
 {
   mesh_and_check(disc_with_hole(0.1, 0.4, 64), "disc with hole 0.1 0.4 64");
 }

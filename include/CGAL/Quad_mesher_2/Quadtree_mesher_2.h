@@ -468,8 +468,9 @@ private:
     for(const auto& r : m_extra_refinement) {
       const Point_2 p = make_point(r.first.x, r.first.y);
       if(!m_tree->contains(p)) continue;
-      const int level = r.second > 0 ? level_for_size(r.second / 2)
-                                     : m_tree->locate(p).level + 1;
+      // at least one level finer than it is there now
+      const int level = (std::max)(r.second > 0 ? level_for_size(r.second / 2) : 0,
+                                   m_tree->locate(p).level + 1);
       if(level <= m_tree->max_depth()) m_tree->refine_at(p, level);
     }
   }

@@ -50,6 +50,7 @@
 #include <limits>
 #include <map>
 #include <set>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -316,6 +317,7 @@ public:
   {
     m_cycles = mesh_boundary_cycles(m_mesh.quads, m_mesh.points.size());
     m_cycle_loop.assign(m_cycles.size(), none);
+    m_on_cycle.assign(m_mesh.points.size(), 0);
     std::vector<std::size_t> owner(m_loops.loops.size(), none);
     bool ok = true;
     for(std::size_t c = 0; c < m_cycles.size(); ++c) {
@@ -336,7 +338,7 @@ public:
       }
       owner[l] = c;
       m_cycle_loop[c] = l;
-      m_on_cycle.insert(m_cycles[c].begin(), m_cycles[c].end());
+      for(std::size_t v : m_cycles[c]) m_on_cycle[v] = 1;
     }
     for(std::size_t l = 0; l < owner.size(); ++l)
       if(owner[l] == none) {
@@ -428,6 +430,10 @@ public:
     auto orient = m_traits.orientation_2_object();
     for(std::size_t q = first_new; q < m_mesh.quads.size(); ++q) {
       const Quad& Q = m_mesh.quads[q];
+      // only quads the buffer stages made or changed (a vertex new or on the core boundary)
+      bool touched = false;
+      for(std::size_t v : Q) touched = touched || v >= m_core_points || on_cycle(v);
+      if(!touched) continue;
       bool valid = true;
       for(int c = 0; c < 4 && valid; ++c)
         valid = orient(m_mesh.points[Q[c]], m_mesh.points[Q[(c + 1) % 4]], m_mesh.points[Q[(c + 2) % 4]])
@@ -531,7 +537,7 @@ public:
       bool improved = false;
       for(std::size_t v : movable) {
         const Local current = local_cost(v);
-        if(current.worst <= 20.0) continue;
+        if(current.worst <= 30.0) continue; // within [60, 120]: good enough
         const Point_2d old = m_xy[v];
         std::vector<Point_2d> targets;
         Point_2d lap{0, 0};
@@ -619,9 +625,11 @@ private:
     return true;
   }
 
+  bool on_cycle(std::size_t v) const { return v < m_on_cycle.size() && m_on_cycle[v] != 0; }
+
   bool is_core_boundary(std::size_t v, const std::vector<std::vector<std::size_t>>&) const
   {
-    return v < m_core_points && m_on_cycle.count(v) != 0 && !m_first_built;
+    return v < m_core_points && on_cycle(v) && !m_first_built;
   }
 
   double cycle_area(std::size_t c) const
@@ -717,6 +725,18 @@ private:
   double cost(const Quad& q) const
   {
     if(q[0] == none) return 2000.0;
+    if(m_cache_costs) {
+      auto it = m_cost_cache.find(q);
+      if(it != m_cost_cache.end()) return it->second;
+      const double b = uncached_cost(q);
+      m_cost_cache.emplace(q, b);
+      return b;
+    }
+    return uncached_cost(q);
+  }
+
+  double uncached_cost(const Quad& q) const
+  {
     std::array<Point_2d, 4> P;
     for(int k = 0; k < 4; ++k) P[k] = m_xy[q[k]];
     double b = quad_badness(P);
@@ -1032,18 +1052,32 @@ private:
         g2 = gs;
         for(auto& x : g2) if(x > ins.after) ++x;
       };
+      // candidate points get ids of their own past the mesh's points (the cost cache knows
+      // quads by their ids), dropped again afterwards
+      const std::size_t first_candidate = m_xy.size();
+      for(const Insert& ins : inserts) m_xy.push_back(ins.xy);
       for(std::size_t j = 0; j < inserts.size(); ++j) {
-        m_xy.push_back(inserts[j].xy);
         std::vector<std::size_t> g2id, g2;
-        with_insert(inserts[j], m_xy.size() - 1, g2id, g2);
+        with_insert(inserts[j], first_candidate + j, g2id, g2);
         Strip_result res = pair_strip(fid, g2id, g2);
-        m_xy.pop_back();
         if(res.cost < best.cost) { best = std::move(res); chosen = j; }
+      }
+      m_xy.resize(first_candidate);
+      for(auto it = m_cost_cache.begin(); it != m_cost_cache.end();) {
+        bool candidate = false;
+        for(std::size_t v : it->first) candidate = candidate || v >= first_candidate;
+        it = candidate ? m_cost_cache.erase(it) : std::next(it);
       }
       if(chosen == none) return best;
       const Insert& ins = inserts[chosen];
-      const std::size_t id = ins.vertex != none ? input_vertex_point(l, ins.vertex)
-                                                : add_point_between(gids[ins.after], gids[(ins.after + 1) % M0], ins.t);
+      // a new node lies on the loop itself (at its parameter), never on a chord
+      std::size_t id;
+      if(ins.vertex != none) {
+        id = input_vertex_point(l, ins.vertex);
+      } else {
+        const Loop_locator::Hit h = locate_param(l, ins.param);
+        id = point_on_edge(l, h.edge, h.t);
+      }
       std::vector<std::size_t> g2id, g2;
       with_insert(ins, id, g2id, g2);
       gids = std::move(g2id);
@@ -1051,6 +1085,7 @@ private:
       params.insert(params.begin() + std::ptrdiff_t(ins.after + 1), ins.param);
       return pair_strip(fid, gids, gs);
     };
+    m_cache_costs = true;
     Strip_result best = solve(gid, gparam, g);
     // A fan of boundary edges that is flat (its middle node is no input vertex and lies on a
     // straight piece of the boundary) cannot be made a quad: such a node is taken out and the
@@ -1075,7 +1110,7 @@ private:
           const bool has_next = std::find(pos.begin(), pos.end(), (mid + 1) % M0) != pos.end();
           if(!has_prev || !has_next) continue;
           for(std::size_t k : { mid, (mid + M0 - 1) % M0, (mid + 1) % M0 })
-            if(remove == none && removable(k)) remove = k;
+            if(remove == none && removable(k) && chord_within_tolerance(l, gid, gparam, k)) remove = k;
         }
         if(remove != none) removed.push_back(remove);
       }
@@ -1089,6 +1124,8 @@ private:
       }
       best = solve(gid, gparam, g);
     }
+    m_cache_costs = false;
+    m_cost_cache.clear();
     if(best.cost.worst == HUGE_VAL) {
       request_all(c);
       m_report.failure = "no pairing of a buffer strip into quads";
@@ -1201,26 +1238,23 @@ private:
     return h;
   }
 
-  // a new boundary point at fraction t from boundary node a to b: on their input edge when
-  // they share one, else on the chord (a dropped vertex lies between them)
-  std::size_t add_point_between(std::size_t a, std::size_t b, double t)
+  // whether the chord between the chain neighbours of node k stays within the tolerance of
+  // the loop between them (taking node k out must not pull the boundary away)
+  bool chord_within_tolerance(std::size_t l, const std::vector<std::size_t>& gid,
+                              const std::vector<double>& param, std::size_t k) const
   {
-    auto sa = m_slide.find(a), sb = m_slide.find(b);
-    const Point_2d A = m_xy[a], B = m_xy[b];
-    const Point_2d X{ A.x + t * (B.x - A.x), A.y + t * (B.y - A.y) };
-    for(auto it : { sa, sb })
-      if(it != m_slide.end()) {
-        const auto& lv = m_loops.loops[it->second.loop].vertices;
-        const Point_2d E0 = to_point_2d(m_domain.points[lv[it->second.edge]]);
-        const Point_2d E1 = to_point_2d(m_domain.points[lv[(it->second.edge + 1) % lv.size()]]);
-        const Point_2d e = minus_2d(E1, E0);
-        const double el2 = dot_2d(e, e);
-        if(std::abs(cross_2d(e, minus_2d(X, E0))) <= 1e-9 * el2)
-          return point_on_edge(it->second.loop, it->second.edge, dot_2d(minus_2d(X, E0), e) / el2);
-      }
-    m_mesh.points.push_back(point_between(m_mesh.points[a], m_mesh.points[b], t));
-    m_xy.push_back(to_point_2d(m_mesh.points.back()));
-    return m_mesh.points.size() - 1;
+    const std::size_t M = gid.size();
+    const std::size_t a = (k + M - 1) % M, b = (k + 1) % M;
+    const Point_2d A = m_xy[gid[a]], B = m_xy[gid[b]];
+    const double L = m_locator->length(l);
+    double s0 = param[a], s1 = b > a ? param[b] : param[b] + L;
+    const auto& v = m_locator->loop(l);
+    for(std::size_t j = 0; j < v.size(); ++j) {
+      double s = m_locator->arc(l, j);
+      while(s < s0) s += L;
+      if(s < s1 && point_segment_distance(v[j], A, B) > m_chord_tolerance) return false;
+    }
+    return point_segment_distance(m_xy[gid[k]], A, B) <= m_chord_tolerance;
   }
 
   // a loop vertex the mesh must keep: it turns the boundary by the feature angle or more
@@ -1327,7 +1361,19 @@ private:
   std::map<std::size_t, double> m_corner_angle;
   std::map<std::size_t, Slide> m_slide;
   std::set<std::size_t> m_input_vertex_ids;
-  std::set<std::size_t> m_on_cycle;
+  std::vector<char> m_on_cycle; // per core point
+  struct Quad_hash
+  {
+    std::size_t operator()(const Quad& q) const
+    {
+      std::size_t h = 0;
+      for(std::size_t v : q) h = h * 0x9E3779B97F4A7C15ull + v;
+      return h ^ (h >> 29);
+    }
+  };
+  // quad costs while a strip is paired (its points do not move meanwhile)
+  mutable std::unordered_map<Quad, double, Quad_hash> m_cost_cache;
+  bool m_cache_costs = false;
   bool m_first_built = false;
   std::size_t m_core_points = 0;
   double m_feature_angle = 20.0;  // turning (degrees) that makes a loop vertex a corner
