@@ -1,0 +1,80 @@
+// Copyright (c) 2026 Quad_mesher_2 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Quad_mesher_2 developers
+//
+// Smooth domains (paper §4): a disc with an off-centre hole, polygons of 256 and 128 vertices,
+// meshed with a maximum cell size of 2^-k of the radius, stage by stage: up to the clearance,
+// up to the templates, the first and the second buffer layer (the whole pipeline, refinement
+// rounds included). Counters: quads, refinement rounds, ns per quad.
+//
+//   bench_domain --benchmark_out=domain.json --benchmark_out_format=json
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Quad_mesher_2/Quadtree_mesher_2.h>
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+
+namespace {
+
+template <class K>
+CGAL::Quad_mesher_2::Domain_2<K> disc_with_hole()
+{
+  CGAL::Quad_mesher_2::Domain_2<K> d;
+  auto loop = [&](double cx, double cy, double r, std::size_t n) {
+    const std::size_t base = d.points.size();
+    for(std::size_t i = 0; i < n; ++i) {
+      const double t = 2 * 3.14159265358979323846 * double(i) / double(n);
+      d.points.emplace_back(cx + r * std::cos(t), cy + r * std::sin(t));
+      d.segments.push_back({ base + i, base + (i + 1) % n });
+    }
+  };
+  loop(0, 0, 1, 256);
+  loop(0.3, 0.1, 0.3, 128);
+  d.holes.emplace_back(0.3, 0.1);
+  return d;
+}
+
+template <class K>
+void BM_domain(benchmark::State& state, CGAL::Quad_mesher_2::Stage last)
+{
+  const auto domain = disc_with_hole<K>();
+  const CGAL::Quad_mesher_2::Mesh_criteria_2<K> criteria(std::ldexp(1.0, -int(state.range(0))));
+  std::size_t quads = 0;
+  int rounds = 0;
+  for(auto _ : state) {
+    CGAL::Quad_mesher_2::Quadtree_mesher_2<K> mesher(domain, criteria);
+    auto mesh = mesher.run(last);
+    quads = mesh.quads.size();
+    rounds = mesher.rounds();
+    benchmark::DoNotOptimize(mesh.points.data());
+  }
+  state.counters["quads"] = double(quads);
+  state.counters["rounds"] = double(rounds);
+  state.counters["ns_per_quad"] =
+    benchmark::Counter(double(quads) * state.iterations() * 1e-9,
+                       benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+void BM_epick(benchmark::State& state, CGAL::Quad_mesher_2::Stage last) { BM_domain<CGAL::Epick>(state, last); }
+void BM_epeck(benchmark::State& state, CGAL::Quad_mesher_2::Stage last) { BM_domain<CGAL::Epeck>(state, last); }
+
+using CGAL::Quad_mesher_2::Stage;
+
+} // namespace
+
+// max cell size 2^-5 .. 2^-9 of the radius: about 10^4 to 10^6 quads
+BENCHMARK_CAPTURE(BM_epick, clearance, Stage::CLEARANCE)
+  ->DenseRange(5, 9, 2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_epick, templates, Stage::TEMPLATES)
+  ->DenseRange(5, 9, 2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_epick, buffer1, Stage::BUFFER1)
+  ->DenseRange(5, 9, 2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_epick, buffer2, Stage::BUFFER2)
+  ->DenseRange(5, 9, 2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_epeck, buffer2, Stage::BUFFER2)
+  ->DenseRange(5, 9, 2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+BENCHMARK_MAIN();
