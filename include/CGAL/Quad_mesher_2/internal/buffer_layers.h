@@ -910,7 +910,7 @@ private:
     // a projection on a vertex (to rounding) is that vertex; a second one shares it
     std::vector<std::size_t> alias_vertex(n, none);
     {
-      const double tol = 1e-9 * L;
+      const double tol = (std::max)(1e-9 * L, 1e-8 * m_locator->diagonal()); // verify_mesh merges at 1e-9 of the diagonal
       std::vector<Node> merged;
       for(const Node& nd : nodes) {
         if(!merged.empty() && nd.param - merged.back().param <= tol
