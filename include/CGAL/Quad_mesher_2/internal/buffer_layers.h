@@ -274,7 +274,6 @@ struct Buffer_report
   std::size_t moved_notches = 0;
   std::size_t first_layer_quads = 0;
   std::size_t second_layer_quads = 0;
-  std::size_t fans = 0;
   std::size_t invalid_quads = 0;
   std::size_t bad_angle_quads = 0;
   /// points (with the local size there) where a finer quadtree would help
@@ -1135,7 +1134,10 @@ private:
     for(std::size_t k = 0; k < M; ++k)
       if(m_slide.count(gid[k]))
         m_slide[gid[k]].neighbors = { gid[(k + M - 1) % M], gid[(k + 1) % M] };
-    for(const Quad& q : best.quads) emit_strip_quad(q, cyc);
+    for(const Quad& q : best.quads) {
+      add_quad(q);
+      ++m_report.second_layer_quads;
+    }
   }
 
   struct Strip_result
@@ -1275,31 +1277,23 @@ private:
     return length_2d(minus_2d(p, Point_2d{ a.x + t * ab.x, a.y + t * ab.y }));
   }
 
-  void emit_strip_quad(const Quad& q, const std::vector<std::size_t>&)
-  {
-    add_quad(q);
-    ++m_report.second_layer_quads;
-  }
-
   // the mesh vertex of a chain node (an input vertex is added once, at its exact position)
   std::size_t input_vertex_point(std::size_t l, std::size_t k)
   {
-    {
-      const std::size_t input = m_loops.loops[l].vertices[k];
-      auto it = m_input_vertex.find(input);
-      if(it != m_input_vertex.end()) return it->second;
-      m_mesh.points.push_back(m_domain.points[input]);
-      m_xy.push_back(to_point_2d(m_domain.points[input]));
-      const std::size_t id = m_mesh.points.size() - 1;
-      m_input_vertex[input] = id;
-      m_input_vertex_ids.insert(id);
-      const auto& lv = m_loops.loops[l].vertices;
-      const std::size_t nv = lv.size();
-      m_corner_angle[id] = 360.0 - right_side_angle(to_point_2d(m_domain.points[lv[(k + nv - 1) % nv]]),
-                                                    to_point_2d(m_domain.points[input]),
-                                                    to_point_2d(m_domain.points[lv[(k + 1) % nv]]));
-      return id;
-    }
+    const std::size_t input = m_loops.loops[l].vertices[k];
+    auto it = m_input_vertex.find(input);
+    if(it != m_input_vertex.end()) return it->second;
+    m_mesh.points.push_back(m_domain.points[input]);
+    m_xy.push_back(to_point_2d(m_domain.points[input]));
+    const std::size_t id = m_mesh.points.size() - 1;
+    m_input_vertex[input] = id;
+    m_input_vertex_ids.insert(id);
+    const auto& lv = m_loops.loops[l].vertices;
+    const std::size_t nv = lv.size();
+    m_corner_angle[id] = 360.0 - right_side_angle(to_point_2d(m_domain.points[lv[(k + nv - 1) % nv]]),
+                                                  to_point_2d(m_domain.points[input]),
+                                                  to_point_2d(m_domain.points[lv[(k + 1) % nv]]));
+    return id;
   }
 
   std::size_t point_on_edge(std::size_t l, std::size_t edge, double t)
@@ -1328,22 +1322,6 @@ private:
     std::size_t loop, edge;
     std::array<std::size_t, 2> neighbors;
   };
-
-  std::size_t point_at_param(std::size_t l, double s)
-  {
-    const double L = m_locator->length(l);
-    s = std::fmod(s, L);
-    if(s < 0) s += L;
-    const std::size_t nv = m_locator->loop(l).size();
-    std::size_t lo = 0, hi = nv; // find edge with arc(lo) <= s < arc(lo+1)
-    while(hi - lo > 1) {
-      std::size_t mid = (lo + hi) / 2;
-      if(m_locator->arc(l, mid) <= s) lo = mid; else hi = mid;
-    }
-    const double len = m_locator->arc(l, lo + 1) - m_locator->arc(l, lo);
-    const double t = len > 0 ? (std::min)(1.0, (std::max)(0.0, (s - m_locator->arc(l, lo)) / len)) : 0.0;
-    return point_on_edge(l, lo, t);
-  }
 
   Mesh& m_mesh;
   std::vector<double> m_size;
