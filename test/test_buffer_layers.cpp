@@ -8,6 +8,7 @@
 // semantics, determinism, bad input, and the stable internal helpers of buffer_layers.h.
 
 #include "qm2_mesh_checks.h"
+#include "qm2_test_domains.h"
 #include "qm2_test_kernel.h"
 
 #include <CGAL/Quad_mesher_2/Domain_loops_2.h>
@@ -46,33 +47,9 @@ constexpr double pi = 3.14159265358979323846;
 
 // ---- domains -------------------------------------------------------------------------------
 
-// closed polygons given as point lists, plus hole seed points
-Domain polygons(const std::vector<std::vector<Point>>& polys, const std::vector<Point>& holes = {})
-{
-  Domain d;
-  for(const auto& poly : polys) {
-    const std::size_t first = d.points.size();
-    for(std::size_t i = 0; i < poly.size(); ++i) {
-      d.points.push_back(poly[i]);
-      d.segments.push_back({first + i, first + (i + 1) % poly.size()});
-    }
-  }
-  d.holes = holes;
-  return d;
-}
-
-std::vector<Point> rectangle(double x0, double y0, double x1, double y1)
-{
-  return {Point(x0, y0), Point(x1, y0), Point(x1, y1), Point(x0, y1)};
-}
-
-std::vector<Point> disc(double cx, double cy, double r, int n)
-{
-  std::vector<Point> p;
-  for(int i = 0; i < n; ++i)
-    p.emplace_back(cx + r * std::cos(2 * pi * i / n), cy + r * std::sin(2 * pi * i / n));
-  return p;
-}
+using qm2_test::polygons;
+using qm2_test::rectangle;
+using qm2_test::disc;
 
 Domain disc_domain() { return polygons({disc(0, 0, 1, 64)}); }
 

@@ -205,7 +205,6 @@ public:
     CGAL_precondition(m_tree != nullptr && !m_domain.is_point_cloud());
     auto start = std::chrono::steady_clock::now();
     internal::Buffer_layers<GeomTraits> layers(mesh, m_core_vertex_size, m_domain, m_loops, m_traits);
-    layers.begin();
     bool ok = layers.match_loops();
     if(ok && last >= Stage::TEMPLATES)
       layers.relax_notches();
@@ -217,7 +216,7 @@ public:
     if(ok && last >= Stage::BUFFER2)
       layers.optimize();
     if(ok)
-      layers.check_new_quads(0);
+      layers.check_quads();
     const std::vector<std::size_t> index = layers.remove_unused_points();
     for(std::size_t& v : m_point_vertices)
       v = index[v];

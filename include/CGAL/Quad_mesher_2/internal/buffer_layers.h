@@ -96,6 +96,26 @@ mesh_boundary_cycles(const std::vector<std::array<std::size_t, 4>>& quads, std::
   return cycles;
 }
 
+/// the parameter in [0, 1] of the point of segment (a, b) nearest to p
+inline double nearest_segment_parameter(const Point_2d& p, const Point_2d& a, const Point_2d& b)
+{
+  const Point_2d ab = minus_2d(b, a);
+  const double len2 = dot_2d(ab, ab);
+  const double t = len2 > 0 ? dot_2d(minus_2d(p, a), ab) / len2 : 0.0;
+  return (std::min)(1.0, (std::max)(0.0, t));
+}
+
+/// a + t (b - a)
+inline Point_2d along_2d(const Point_2d& a, const Point_2d& b, double t)
+{
+  return Point_2d{ a.x + t * (b.x - a.x), a.y + t * (b.y - a.y) };
+}
+
+inline double point_segment_distance(const Point_2d& p, const Point_2d& a, const Point_2d& b)
+{
+  return length_2d(minus_2d(p, along_2d(a, b, nearest_segment_parameter(p, a, b))));
+}
+
 /// Closest points on the domain's loops, in doubles (search only; new points on the boundary
 /// are then constructed from a segment's end points in the kernel).
 class Loop_locator
@@ -184,26 +204,13 @@ private:
     const auto& v = m_loops[l];
     const Point_2d& a = v[k];
     const Point_2d& b = v[(k + 1) % v.size()];
-    const Point_2d ab = minus_2d(b, a);
-    const double len2 = dot_2d(ab, ab);
-    double t = len2 > 0 ? dot_2d(minus_2d(p, a), ab) / len2 : 0.0;
-    t = (std::min)(1.0, (std::max)(0.0, t));
     Hit h;
     h.loop = l;
     h.edge = k;
-    h.t = t;
-    h.point = Point_2d{a.x + t * ab.x, a.y + t * ab.y};
+    h.t = nearest_segment_parameter(p, a, b);
+    h.point = along_2d(a, b, h.t);
     h.dist = length_2d(minus_2d(p, h.point));
     return h;
-  }
-
-  static double point_segment_distance(const Point_2d& p, const Point_2d& a, const Point_2d& b)
-  {
-    const Point_2d ab = minus_2d(b, a);
-    const double len2 = dot_2d(ab, ab);
-    double t = len2 > 0 ? dot_2d(minus_2d(p, a), ab) / len2 : 0.0;
-    t = (std::min)(1.0, (std::max)(0.0, t));
-    return length_2d(minus_2d(p, Point_2d{a.x + t * ab.x, a.y + t * ab.y}));
   }
 
   static double segment_segment_distance(const Point_2d& a, const Point_2d& b, const Point_2d& c,
@@ -306,6 +313,7 @@ public:
     m_xy.resize(mesh.points.size());
     for(std::size_t v = 0; v < mesh.points.size(); ++v)
       m_xy[v] = to_point_2d(mesh.points[v]);
+    m_core_points = mesh.points.size();
   }
 
   const Buffer_report& report() const { return m_report; }
@@ -421,13 +429,13 @@ public:
       build_strip(c);
   }
 
-  /// Checks every new quad (those from index `first_new`) with exact predicates; records
-  /// refinement requests at the invalid ones and at those with an angle outside [45, 135]
-  /// that no sharp input corner forces.
-  void check_new_quads(std::size_t first_new)
+  /// Checks every quad the buffer stages made or changed with exact predicates and counts
+  /// those with an angle outside [45, 135] that no sharp input corner forces; records
+  /// refinement requests at the invalid ones.
+  void check_quads()
   {
     auto orient = m_traits.orientation_2_object();
-    for(std::size_t q = first_new; q < m_mesh.quads.size(); ++q) {
+    for(std::size_t q = 0; q < m_mesh.quads.size(); ++q) {
       const Quad& Q = m_mesh.quads[q];
       // only quads the buffer stages made or changed (a vertex new or on the core boundary)
       bool touched = false;
@@ -463,8 +471,6 @@ public:
       }
     }
   }
-
-  void begin() { m_core_points = m_mesh.points.size(); }
 
   /// Drops the points no quad uses (boundary nodes the pairing took out again); returns the
   /// new index of every old point (`none` for a dropped one).
@@ -527,7 +533,7 @@ public:
         while(Q[c] != v) ++c;
         angle_sum += corner_angle_degrees(m_xy[Q[(c + 3) % 4]], m_xy[v], m_xy[Q[(c + 1) % 4]]);
       }
-      const double expected = m_slide.count(v) ? 180.0 : (is_core_boundary(v, quads_at) ? -1 : 360.0);
+      const double expected = m_slide.count(v) ? 180.0 : (is_core_boundary(v) ? -1 : 360.0);
       if(expected > 0 && std::abs(angle_sum - expected) > 1e-6)
         r.invalid += 1 << 20; // folded
       return r;
@@ -620,13 +626,13 @@ private:
     const double el = length_2d(e);
     if(std::abs(cross_2d(e, minus_2d(A, E0))) > 1e-9 * el * el || std::abs(cross_2d(e, minus_2d(B, E0))) > 1e-9 * el * el)
       return false;
-    p = Point_2d{A.x + t * ab.x, A.y + t * ab.y};
+    p = along_2d(A, B, t);
     return true;
   }
 
   bool on_cycle(std::size_t v) const { return v < m_on_cycle.size() && m_on_cycle[v] != 0; }
 
-  bool is_core_boundary(std::size_t v, const std::vector<std::vector<std::size_t>>&) const
+  bool is_core_boundary(std::size_t v) const
   {
     return v < m_core_points && on_cycle(v) && !m_first_built;
   }
@@ -1027,7 +1033,7 @@ private:
       auto between = [&](std::size_t k, double t) {
         const Point_2d A = m_xy[gids[k]], B = m_xy[gids[(k + 1) % M0]];
         const double pb = k + 1 < M0 ? params[k + 1] : params[0] + L;
-        return Insert{ k, Point_2d{ A.x + t * (B.x - A.x), A.y + t * (B.y - A.y) }, none, t,
+        return Insert{ k, along_2d(A, B, t), none, t,
                        params[k] + t * (pb - params[k]) };
       };
       for(std::size_t j = 0; j < edges.size() && j < 3; ++j) inserts.push_back(between(edges[j].second, 0.5));
@@ -1235,7 +1241,7 @@ private:
     h.t = len > 0 ? (std::min)(1.0, (std::max)(0.0, (s - m_locator->arc(l, lo)) / len)) : 0.0;
     const Point_2d& a = v[lo];
     const Point_2d& b = v[(lo + 1) % v.size()];
-    h.point = Point_2d{ a.x + h.t * (b.x - a.x), a.y + h.t * (b.y - a.y) };
+    h.point = along_2d(a, b, h.t);
     h.dist = 0;
     return h;
   }
@@ -1266,15 +1272,6 @@ private:
     const std::size_t nv = v.size();
     const double beta = right_side_angle(v[(k + nv - 1) % nv], v[k], v[(k + 1) % nv]);
     return std::abs(180.0 - beta) >= m_feature_angle;
-  }
-
-  static double point_segment_distance(const Point_2d& p, const Point_2d& a, const Point_2d& b)
-  {
-    const Point_2d ab = minus_2d(b, a);
-    const double len2 = dot_2d(ab, ab);
-    double t = len2 > 0 ? dot_2d(minus_2d(p, a), ab) / len2 : 0.0;
-    t = (std::min)(1.0, (std::max)(0.0, t));
-    return length_2d(minus_2d(p, Point_2d{ a.x + t * ab.x, a.y + t * ab.y }));
   }
 
   // the mesh vertex of a chain node (an input vertex is added once, at its exact position)
