@@ -107,6 +107,8 @@ public:
     if(!m_domain.is_point_cloud() && m_criteria.resolve_narrow_regions())
       refine_narrow_regions();
     refine_at_requests();
+    if(!m_domain.is_point_cloud())
+      refine_boundary_band();
     record("refine", start);
     start = std::chrono::steady_clock::now();
     if(m_criteria.points_as_vertices()) {
@@ -459,6 +461,45 @@ private:
         m_tree->refine_at(p, level);
     }
   }
+
+  // Cells within `boundary_band` cells of the boundary are made as small as the leaf at the
+  // nearest boundary point, so the clearance leaves a core boundary of one cell size: the
+  // uniform grid of §4.4 (boundary angles 90°, 180° and 270° only) and a buffer zone of even
+  // width. The levels are read before any band is refined, so fine cells do not spread along
+  // the whole boundary, one band after another.
+  void refine_boundary_band()
+  {
+    auto make_point = m_traits.construct_point_2_object();
+    auto x_of = m_traits.compute_x_2_object();
+    auto y_of = m_traits.compute_y_2_object();
+    std::vector<std::pair<std::array<double, 2>, int>> targets;
+    for(const auto& loop : m_loops.loops) {
+      const std::size_t n = loop.vertices.size();
+      for(std::size_t k = 0; k < n; ++k) {
+        const Point_2& a = m_domain.points[loop.vertices[k]];
+        const Point_2& b = m_domain.points[loop.vertices[(k + 1) % n]];
+        const double ax = CGAL::to_double(x_of(a)), ay = CGAL::to_double(y_of(a));
+        const double dx = CGAL::to_double(x_of(b)) - ax, dy = CGAL::to_double(y_of(b)) - ay;
+        const double length = std::hypot(dx, dy);
+        for(double t = 0; t < 1;) {
+          const std::array<double, 2> q{ { ax + t * dx, ay + t * dy } };
+          const int level = m_tree->locate(make_point(q[0], q[1])).level;
+          targets.push_back({ q, level });
+          t += (std::max)(m_tree->cell_side(level) / (2 * length), 1.0 / 65536);
+        }
+      }
+    }
+    for(const auto& target : targets) {
+      const double h = m_tree->cell_side(target.second);
+      for(int i = -boundary_band; i <= boundary_band; ++i)
+        for(int j = -boundary_band; j <= boundary_band; ++j) {
+          const Point_2 p = make_point(target.first[0] + i * h, target.first[1] + j * h);
+          if(m_tree->contains(p) && m_tree->locate(p).level < target.second)
+            m_tree->refine_at(p, target.second);
+        }
+    }
+  }
+  static constexpr int boundary_band = 3;
 
   // where earlier rounds found the buffer layers poor: one level finer than it was there
   void refine_at_requests()

@@ -407,6 +407,7 @@ public:
         const double lambda = 0.5 * h.dist / c_dn;
         F[i] = Point_2d{b.x + lambda * d.x, b.y + lambda * d.y};
       }
+      smooth_first_points(c);
       const std::size_t base = m_mesh.points.size();
       for(std::size_t i = 0; i < n; ++i) {
         add_point(F[i]);
@@ -419,6 +420,103 @@ public:
       m_first_base.push_back(base);
       m_first_built = true;
       m_report.first_layer_quads += n;
+    }
+  }
+
+  // The first buffer points of cycle c, moved one at a time to improve the two layers they
+  // will bound: their quads B_i F_i F_{i+1} B_{i+1} and the projection quads
+  // F_i G_i G_{i+1} F_{i+1}, G the nearest boundary point (Lemmas 3 and 4 ask that the F
+  // chain run nearly parallel to the boundary, so that the projections make right angles).
+  // A move is kept if it lowers (invalid quads, quads outside [45, 135], worst deviation from
+  // 90 degrees, sum of squared deviations) of the four quads at F_i; F_i stays within half
+  // its distance from B_i of where it started, so it cannot wander across the buffer, and
+  // does not move within twice the local size of a loop corner.
+  void smooth_first_points(std::size_t c)
+  {
+    const auto& cyc = m_cycles[c];
+    const std::size_t n = cyc.size(), l = m_cycle_loop[c];
+    auto& F = m_first[c];
+    if(n < 3) return;
+    const std::vector<Point_2d> start = F;
+    std::vector<double> reach(n);
+    std::vector<Point_2d> G(n);
+    const auto& loop_xy = m_locator->loop(l);
+    const std::size_t nv = loop_xy.size();
+    for(std::size_t i = 0; i < n; ++i) {
+      const Loop_locator::Hit hit = m_locator->closest(F[i], 2 * m_size[cyc[i]], l);
+      G[i] = hit.point;
+      reach[i] = 0.5 * length_2d(minus_2d(F[i], m_xy[cyc[i]]));
+      // near a corner the strip fans and its nodes are not the projections: F stays put
+      const double near = 2 * m_size[cyc[i]];
+      for(std::size_t k = hit.edge, steps = 0; steps < nv; k = (k + nv - 1) % nv, ++steps) {
+        if(length_2d(minus_2d(loop_xy[k], hit.point)) > near) break;
+        if(is_feature(l, k)) { reach[i] = 0; break; }
+      }
+      for(std::size_t k = (hit.edge + 1) % nv, steps = 0; reach[i] > 0 && steps < nv; k = (k + 1) % nv, ++steps) {
+        if(length_2d(minus_2d(loop_xy[k], hit.point)) > near) break;
+        if(is_feature(l, k)) { reach[i] = 0; break; }
+      }
+    }
+    struct Local
+    {
+      int invalid = 0, out = 0;
+      double worst = 0, sum = 0;
+      bool operator<(const Local& o) const
+      {
+        if(invalid != o.invalid) return invalid < o.invalid;
+        if(out != o.out) return out < o.out;
+        if(worst < o.worst - 1e-9) return true;
+        if(worst > o.worst + 1e-9) return false;
+        return sum < o.sum - 1e-9;
+      }
+      void add(double b)
+      {
+        if(b >= 1000.0) ++invalid;
+        else if(b > 45.0 + 1e-9) ++out;
+        worst = (std::max)(worst, b);
+        sum += b * b;
+      }
+    };
+    auto local = [&](std::size_t i, const Point_2d& f, const Point_2d& g) {
+      const std::size_t p = (i + n - 1) % n, q = (i + 1) % n;
+      Local r;
+      r.add(quad_badness({ m_xy[cyc[p]], F[p], f, m_xy[cyc[i]] }));
+      r.add(quad_badness({ m_xy[cyc[i]], f, F[q], m_xy[cyc[q]] }));
+      r.add(quad_badness({ F[p], G[p], g, f }));
+      r.add(quad_badness({ f, g, G[q], F[q] }));
+      return r;
+    };
+    for(int pass = 0; pass < 8; ++pass) {
+      bool moved = false;
+      for(std::size_t i = 0; i < n; ++i) {
+        if(reach[i] == 0) continue;
+        Local best = local(i, F[i], G[i]);
+        if(best.invalid == 0 && best.out == 0 && best.worst <= 20.0) continue;
+        const double h = m_size[cyc[i]];
+        Point_2d best_f = F[i], best_g = G[i];
+        const Point_2d mid{ 0.5 * (F[(i + n - 1) % n].x + F[(i + 1) % n].x),
+                            0.5 * (F[(i + n - 1) % n].y + F[(i + 1) % n].y) };
+        std::vector<Point_2d> tries;
+        for(double s : { 1.0, 0.5, 0.25 })
+          tries.push_back(Point_2d{ F[i].x + s * (mid.x - F[i].x), F[i].y + s * (mid.y - F[i].y) });
+        for(double s : { 0.2, 0.1, 0.05 })
+          for(int k = 0; k < 8; ++k) {
+            const double a = k * 3.14159265358979323846 / 4;
+            tries.push_back(Point_2d{ F[i].x + s * h * std::cos(a), F[i].y + s * h * std::sin(a) });
+          }
+        for(const Point_2d& f : tries) {
+          if(length_2d(minus_2d(f, start[i])) > reach[i]) continue;
+          const Loop_locator::Hit own = m_locator->closest(f, 2 * h, l);
+          const Local r = local(i, f, own.point);
+          if(r < best) { best = r; best_f = f; best_g = own.point; }
+        }
+        if(best_f.x != F[i].x || best_f.y != F[i].y) {
+          F[i] = best_f;
+          G[i] = best_g;
+          moved = true;
+        }
+      }
+      if(!moved) break;
     }
   }
 
@@ -1037,6 +1135,20 @@ private:
                        params[k] + t * (pb - params[k]) };
       };
       for(std::size_t j = 0; j < edges.size() && j < 3; ++j) inserts.push_back(between(edges[j].second, 0.5));
+      // where the strip is thickest for its F spacing: the fan the extra node makes needs
+      // room, and elsewhere the pairing would rather shear a long thin stretch
+      std::vector<std::pair<double, std::size_t>> thick; // (thickness / spacing, chain edge)
+      for(std::size_t r = 0; r < n; ++r) {
+        if(gs[r] >= M0) continue;
+        const double spacing = length_2d(minus_2d(m_xy[fid[(r + 1) % n]], m_xy[fid[r]]));
+        if(spacing > 0)
+          thick.emplace_back(length_2d(minus_2d(m_xy[fid[r]], m_xy[gids[gs[r]]])) / spacing, gs[r]);
+      }
+      std::sort(thick.rbegin(), thick.rend());
+      for(std::size_t j = 0; j < thick.size() && j < 4; ++j) {
+        inserts.push_back(between(thick[j].second, 0.5));
+        inserts.push_back(between((thick[j].second + M0 - 1) % M0, 0.5));
+      }
       std::vector<std::pair<double, std::size_t>> corners; // (turn, chain index): the sharpest 4
       for(std::size_t k = 0; k < M0; ++k) {
         auto it = m_corner_angle.find(gids[k]);
