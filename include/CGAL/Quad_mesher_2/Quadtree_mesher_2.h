@@ -9,6 +9,7 @@
 #include <CGAL/Quad_mesher_2/Domain_2.h>
 #include <CGAL/Quad_mesher_2/Domain_loops_2.h>
 #include <CGAL/Quad_mesher_2/Mesh_criteria_2.h>
+#include <CGAL/Quad_mesher_2/Mesh_quality_2.h>
 #include <CGAL/Quad_mesher_2/Meshing_error.h>
 #include <CGAL/Quad_mesher_2/Quad_mesh_2.h>
 #include <CGAL/Quad_mesher_2/internal/apply_templates.h>
@@ -229,10 +230,16 @@ public:
 
   /// Runs the stages up to `last` and returns the mesh. Beyond the clearance, where the buffer
   /// layers would have invalid quads the quadtree is refined there and the stages run again,
-  /// at most `max_refinement_rounds` times; a mesh with invalid quads is never returned.
+  /// at most `max_refinement_rounds` times; a mesh with invalid quads is never returned. Where
+  /// a valid buffer has angles outside [45°, 135°] that no input corner forces, the quadtree
+  /// is refined there too, in at most `max_angle_rounds` rounds; the valid round with the
+  /// fewest such quads is the one returned (rebuilt if a later round was worse).
   Mesh run(Stage last = Stage::POINTS)
   {
     m_extra_refinement.clear();
+    std::size_t best_bad = std::size_t(-1);
+    std::vector<std::pair<internal::Point_2d, double>> best_refinement;
+    bool rebuild_best = false;
     for(m_rounds = 1;; ++m_rounds) {
       build_quadtree();
       Mesh mesh = core_mesh();
@@ -240,10 +247,16 @@ public:
         insert_points(mesh);
       if(last >= Stage::CLEARANCE)
         clear_buffer_zone(mesh);
-      if(last <= Stage::CLEARANCE || fill_buffer_zone(mesh, last))
+      if(last <= Stage::CLEARANCE || fill_buffer_zone(mesh, last) || rebuild_best)
         return mesh;
       const auto& requests = m_buffer_report.refine_requests;
-      const bool valid = m_buffer_report.failure.empty() && m_buffer_report.invalid_quads == 0;
+      // the whole mesh is checked too: a buffer node on another quad's edge would hang
+      const bool valid = m_buffer_report.failure.empty() && m_buffer_report.invalid_quads == 0
+                         && compute_quality(mesh).is_valid() && !has_near_duplicate_vertices(mesh);
+      if(valid && m_buffer_report.bad_angle_quads < best_bad) {
+        best_bad = m_buffer_report.bad_angle_quads;
+        best_refinement = m_extra_refinement;
+      }
       std::size_t added = 0;
       for(const auto& r : requests) {
         const double size = r.second > 0 ? r.second / 2 : 0;
@@ -251,16 +264,24 @@ public:
         m_extra_refinement.push_back(r);
         ++added;
       }
-      if(valid)
-        return mesh; // angles outside [45, 135] stay; the quality report shows them
-      if(m_rounds < max_refinement_rounds && added > 0)
+      const bool more = added > 0 && m_rounds < (valid ? max_angle_rounds : max_refinement_rounds);
+      if(more)
         continue;
+      if(valid && m_buffer_report.bad_angle_quads == best_bad)
+        return mesh; // angles outside [45, 135] stay; the quality report shows them
+      if(best_bad != std::size_t(-1)) {
+        m_extra_refinement = best_refinement;
+        rebuild_best = true;
+        continue;
+      }
       std::ostringstream msg;
       msg << "the buffer layers could not be built";
       if(!m_buffer_report.failure.empty())
         msg << ": " << m_buffer_report.failure;
-      else
+      else if(m_buffer_report.invalid_quads > 0)
         msg << ": " << m_buffer_report.invalid_quads << " buffer quads are not convex";
+      else
+        msg << ": the mesh has a hanging node, a non-manifold edge or two vertices closer than 1e-9 of its diagonal";
       if(!requests.empty())
         msg << ", near (" << requests.front().first.x << ", " << requests.front().first.y << ")";
       msg << ", after " << m_rounds << " refinement rounds";
@@ -273,6 +294,7 @@ public:
   /// what the buffer stages did in the last round
   const internal::Buffer_report& buffer_report() const { return m_buffer_report; }
   static constexpr int max_refinement_rounds = 8;
+  static constexpr int max_angle_rounds = 2;
 
   /// quads removed by the clearance: outside, crossing the boundary, near it, single
   const std::array<std::size_t, 4>& removed_by_clearance() const { return m_removed; }
@@ -500,6 +522,30 @@ private:
     }
   }
   static constexpr int boundary_band = 3;
+
+  // Two used vertices closer than 1e-9 of the mesh's diagonal: a quad there is degenerate in
+  // any reader's eyes (the verifier merges them), though the points differ.
+  static bool has_near_duplicate_vertices(const Mesh& mesh)
+  {
+    std::vector<bool> used(mesh.points.size(), false);
+    for(const auto& q : mesh.quads)
+      for(std::size_t v : q) used[v] = true;
+    std::vector<internal::Point_2d> p;
+    for(std::size_t v = 0; v < mesh.points.size(); ++v)
+      if(used[v])
+        p.push_back({ CGAL::to_double(mesh.points[v].x()), CGAL::to_double(mesh.points[v].y()) });
+    if(p.size() < 2) return false;
+    std::sort(p.begin(), p.end(), [](const internal::Point_2d& a, const internal::Point_2d& b) {
+      return a.x < b.x || (a.x == b.x && a.y < b.y);
+    });
+    double ymin = p[0].y, ymax = p[0].y;
+    for(const auto& q : p) { ymin = (std::min)(ymin, q.y); ymax = (std::max)(ymax, q.y); }
+    const double tol = 1e-9 * std::hypot(p.back().x - p.front().x, ymax - ymin);
+    for(std::size_t i = 0; i < p.size(); ++i)
+      for(std::size_t j = i + 1; j < p.size() && p[j].x - p[i].x <= tol; ++j)
+        if(std::abs(p[j].y - p[i].y) <= tol) return true;
+    return false;
+  }
 
   // where earlier rounds found the buffer layers poor: one level finer than it was there
   void refine_at_requests()

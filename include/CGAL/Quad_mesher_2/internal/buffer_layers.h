@@ -529,7 +529,7 @@ public:
 
   /// Checks every quad the buffer stages made or changed with exact predicates and counts
   /// those with an angle outside [45, 135] that no sharp input corner forces; records
-  /// refinement requests at the invalid ones.
+  /// refinement requests at both.
   void check_quads()
   {
     auto orient = m_traits.orientation_2_object();
@@ -557,7 +557,7 @@ public:
         }
       if(!valid) ++m_report.invalid_quads;
       if(bad_angle) ++m_report.bad_angle_quads;
-      if(!valid) {
+      if(!valid || bad_angle) {
         for(int c = 0; c < 4; ++c)
           if(Q[c] < m_core_points)
             m_report.refine_requests.emplace_back(m_xy[Q[c]], m_size[Q[c]]);
