@@ -264,7 +264,9 @@ public:
         m_extra_refinement.push_back(r);
         ++added;
       }
-      const bool more = added > 0 && m_rounds < (valid ? max_angle_rounds : max_refinement_rounds);
+      // once a round was valid, refining for angles must not start a chase for validity
+      const bool more = added > 0
+                        && m_rounds < (best_bad != std::size_t(-1) ? max_angle_rounds : max_refinement_rounds);
       if(more)
         continue;
       if(valid && m_buffer_report.bad_angle_quads == best_bad)
