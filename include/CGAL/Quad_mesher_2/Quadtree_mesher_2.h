@@ -253,6 +253,8 @@ public:
       // the whole mesh is checked too: a buffer node on another quad's edge would hang
       const bool valid = m_buffer_report.failure.empty() && m_buffer_report.invalid_quads == 0
                          && compute_quality(mesh).is_valid() && !has_near_duplicate_vertices(mesh);
+      if(valid && last < Stage::BUFFER2)
+        return mesh; // a stage on its way: angles are refined for the finished buffer only
       if(valid && m_buffer_report.bad_angle_quads < best_bad) {
         best_bad = m_buffer_report.bad_angle_quads;
         best_refinement = m_extra_refinement;
