@@ -179,6 +179,7 @@ int run(const Options& opt)
                          { "non_manifold_edges", quality.number_of_non_manifold_edges },
                          { "hanging_nodes", quality.number_of_hanging_nodes },
                          { "duplicate_vertices", quality.number_of_duplicate_vertices },
+                         { "near_duplicate_vertices", quality.number_of_near_duplicate_vertices },
                          { "boundary_loops", quality.number_of_boundary_loops } };
   if(last >= QM::Stage::CLEARANCE) {
     const auto& removed = mesher.removed_by_clearance();

@@ -85,6 +85,7 @@ TEST(MeshQuality2, UnitSquareIsPerfect)
   EXPECT_EQ(q.number_of_non_manifold_edges, 0u);
   EXPECT_EQ(q.number_of_hanging_nodes, 0u);
   EXPECT_EQ(q.number_of_duplicate_vertices, 0u);
+  EXPECT_EQ(q.number_of_near_duplicate_vertices, 0u);
   EXPECT_EQ(q.number_of_unused_vertices, 0u);
   EXPECT_EQ(q.number_of_boundary_loops, 1u);
   EXPECT_TRUE(q.is_valid());
@@ -206,6 +207,21 @@ TEST(MeshQuality2, DuplicateVertices)
   EXPECT_EQ(q.number_of_hanging_nodes, 0u);
   EXPECT_EQ(q.number_of_boundary_loops, 2u);
   EXPECT_FALSE(q.is_valid());
+}
+
+TEST(MeshQuality2, NearDuplicateVertices)
+{
+  using namespace qm2_test_quality;
+  // The same two squares, the second one's left side moved right by 1e-12 (the verifier
+  // merges at 1e-9 of the diagonal) and then by 1e-8 (apart for it).
+  for(const double gap : { 1e-12, 1e-8 }) {
+    const Mesh m = make_mesh({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {1 + gap, 0}, {2, 0}, {2, 1}, {1 + gap, 1}},
+                             {{0, 1, 2, 3}, {4, 5, 6, 7}});
+    const Mesh_quality_2 q = compute_quality(m);
+    EXPECT_EQ(q.number_of_duplicate_vertices, 0u) << gap;
+    EXPECT_EQ(q.number_of_near_duplicate_vertices, gap < 1e-9 ? 2u : 0u) << gap;
+    EXPECT_TRUE(q.is_valid()) << gap; // a point cloud may hold points this close
+  }
 }
 
 TEST(MeshQuality2, NonManifoldEdges)

@@ -83,6 +83,11 @@ struct Mesh_quality_2
   std::size_t number_of_hanging_nodes = 0;
   /// Vertices whose coordinates equal (in double) those of a vertex of smaller index.
   std::size_t number_of_duplicate_vertices = 0;
+  /// Pairs of used vertices closer than 1e-9 times the bounding-box diagonal of the used
+  /// vertices in both coordinates, exact duplicates included: a reader merging at that
+  /// tolerance sees a degenerate quad. Not part of `is_valid()`: a point cloud's input points
+  /// may be that close and must stay apart.
+  std::size_t number_of_near_duplicate_vertices = 0;
   /// Entries of `points` referenced by no quad.
   std::size_t number_of_unused_vertices = 0;
   /// Number of closed boundary loops: the edges used by exactly one quad, chained head to
@@ -398,6 +403,19 @@ Mesh_quality_2 compute_quality(const Quad_mesh_2<Point_2>& mesh)
     for(std::size_t i = 1; i < np; ++i)
       if(sorted[i].x == sorted[i - 1].x && sorted[i].y == sorted[i - 1].y)
         ++r.number_of_duplicate_vertices;
+  }
+  {
+    std::vector<Point_2d> sorted;
+    for(std::size_t v = 0; v < np; ++v)
+      if(used[v]) sorted.push_back(pts[v]);
+    std::sort(sorted.begin(), sorted.end(), [](const Point_2d& a, const Point_2d& b) {
+      return a.x < b.x || (a.x == b.x && a.y < b.y);
+    });
+    const double tol = 1e-9 * internal::length_2d(internal::minus_2d(hi, lo));
+    for(std::size_t i = 0; i < sorted.size(); ++i)
+      for(std::size_t j = i + 1; j < sorted.size() && sorted[j].x - sorted[i].x <= tol; ++j)
+        if(std::abs(sorted[j].y - sorted[i].y) <= tol)
+          ++r.number_of_near_duplicate_vertices;
   }
 
   // Edge usage: non-manifold edges and boundary (used-once) halfedges.

@@ -232,14 +232,16 @@ public:
   /// layers would have invalid quads the quadtree is refined there and the stages run again,
   /// at most `max_refinement_rounds` times; a mesh with invalid quads is never returned. Where
   /// a valid buffer has angles outside [45°, 135°] that no input corner forces, the quadtree
-  /// is refined there too, in at most `max_angle_rounds` rounds; the valid round with the
-  /// fewest such quads is the one returned (rebuilt if a later round was worse).
+  /// is refined there in at most `max_angle_rounds` more rounds, which stop at the first
+  /// invalid one; the valid round with the fewest such quads is the one returned (rebuilt if
+  /// a later round was worse).
   Mesh run(Stage last = Stage::POINTS)
   {
     m_extra_refinement.clear();
     std::size_t best_bad = std::size_t(-1);
     std::vector<std::pair<internal::Point_2d, double>> best_refinement;
     bool rebuild_best = false;
+    int angle_rounds = 0;
     for(m_rounds = 1;; ++m_rounds) {
       build_quadtree();
       Mesh mesh = core_mesh();
@@ -247,14 +249,20 @@ public:
         insert_points(mesh);
       if(last >= Stage::CLEARANCE)
         clear_buffer_zone(mesh);
-      if(last <= Stage::CLEARANCE || fill_buffer_zone(mesh, last) || rebuild_best)
+      if(last <= Stage::CLEARANCE)
         return mesh;
-      const auto& requests = m_buffer_report.refine_requests;
+      fill_buffer_zone(mesh, last);
+      if(rebuild_best)
+        return mesh;
       // the whole mesh is checked too: a buffer node on another quad's edge would hang
+      const Mesh_quality_2 quality = compute_quality(mesh);
       const bool valid = m_buffer_report.failure.empty() && m_buffer_report.invalid_quads == 0
-                         && compute_quality(mesh).is_valid() && !has_near_duplicate_vertices(mesh);
-      if(valid && last < Stage::BUFFER2)
-        return mesh; // a stage on its way: angles are refined for the finished buffer only
+                         && quality.is_valid() && quality.number_of_near_duplicate_vertices == 0;
+      // refined for validity first; for angles only once a round is valid
+      const auto& requests = valid ? m_buffer_report.angle_requests : m_buffer_report.refine_requests;
+      // a stage on its way is not refined for angles: they are the finished buffer's
+      if(valid && (m_buffer_report.bad_angle_quads == 0 || last < Stage::BUFFER2))
+        return mesh;
       if(valid && m_buffer_report.bad_angle_quads < best_bad) {
         best_bad = m_buffer_report.bad_angle_quads;
         best_refinement = m_extra_refinement;
@@ -268,9 +276,12 @@ public:
       }
       // once a round was valid, refining for angles must not start a chase for validity
       const bool more = added > 0
-                        && m_rounds < (best_bad != std::size_t(-1) ? max_angle_rounds : max_refinement_rounds);
-      if(more)
+                        && (best_bad == std::size_t(-1) ? m_rounds < max_refinement_rounds
+                                                        : valid && angle_rounds < max_angle_rounds);
+      if(more) {
+        angle_rounds += valid ? 1 : 0;
         continue;
+      }
       if(valid && m_buffer_report.bad_angle_quads == best_bad)
         return mesh; // angles outside [45, 135] stay; the quality report shows them
       if(best_bad != std::size_t(-1)) {
@@ -298,7 +309,7 @@ public:
   /// what the buffer stages did in the last round
   const internal::Buffer_report& buffer_report() const { return m_buffer_report; }
   static constexpr int max_refinement_rounds = 8;
-  static constexpr int max_angle_rounds = 2;
+  static constexpr int max_angle_rounds = 1;
 
   /// quads removed by the clearance: outside, crossing the boundary, near it, single
   const std::array<std::size_t, 4>& removed_by_clearance() const { return m_removed; }
@@ -526,30 +537,6 @@ private:
     }
   }
   static constexpr int boundary_band = 3;
-
-  // Two used vertices closer than 1e-9 of the mesh's diagonal: a quad there is degenerate in
-  // any reader's eyes (the verifier merges them), though the points differ.
-  static bool has_near_duplicate_vertices(const Mesh& mesh)
-  {
-    std::vector<bool> used(mesh.points.size(), false);
-    for(const auto& q : mesh.quads)
-      for(std::size_t v : q) used[v] = true;
-    std::vector<internal::Point_2d> p;
-    for(std::size_t v = 0; v < mesh.points.size(); ++v)
-      if(used[v])
-        p.push_back({ CGAL::to_double(mesh.points[v].x()), CGAL::to_double(mesh.points[v].y()) });
-    if(p.size() < 2) return false;
-    std::sort(p.begin(), p.end(), [](const internal::Point_2d& a, const internal::Point_2d& b) {
-      return a.x < b.x || (a.x == b.x && a.y < b.y);
-    });
-    double ymin = p[0].y, ymax = p[0].y;
-    for(const auto& q : p) { ymin = (std::min)(ymin, q.y); ymax = (std::max)(ymax, q.y); }
-    const double tol = 1e-9 * std::hypot(p.back().x - p.front().x, ymax - ymin);
-    for(std::size_t i = 0; i < p.size(); ++i)
-      for(std::size_t j = i + 1; j < p.size() && p[j].x - p[i].x <= tol; ++j)
-        if(std::abs(p[j].y - p[i].y) <= tol) return true;
-    return false;
-  }
 
   // where earlier rounds found the buffer layers poor: one level finer than it was there
   void refine_at_requests()

@@ -283,8 +283,10 @@ struct Buffer_report
   std::size_t second_layer_quads = 0;
   std::size_t invalid_quads = 0;
   std::size_t bad_angle_quads = 0;
-  /// points (with the local size there) where a finer quadtree would help
+  /// points (with the local size there) where a finer quadtree would make the buffer valid
   std::vector<std::pair<Point_2d, double>> refine_requests;
+  /// the same, where it would bring angles into [45, 135]
+  std::vector<std::pair<Point_2d, double>> angle_requests;
   /// a message when the buffer could not be built (core loops not matching the domain's)
   std::string failure;
 };
@@ -448,14 +450,11 @@ public:
       reach[i] = 0.5 * length_2d(minus_2d(F[i], m_xy[cyc[i]]));
       // near a corner the strip fans and its nodes are not the projections: F stays put
       const double near = 2 * m_size[cyc[i]];
-      for(std::size_t k = hit.edge, steps = 0; steps < nv; k = (k + nv - 1) % nv, ++steps) {
-        if(length_2d(minus_2d(loop_xy[k], hit.point)) > near) break;
-        if(is_feature(l, k)) { reach[i] = 0; break; }
-      }
-      for(std::size_t k = (hit.edge + 1) % nv, steps = 0; reach[i] > 0 && steps < nv; k = (k + 1) % nv, ++steps) {
-        if(length_2d(minus_2d(loop_xy[k], hit.point)) > near) break;
-        if(is_feature(l, k)) { reach[i] = 0; break; }
-      }
+      for(std::size_t step : { nv - 1, std::size_t(1) }) // backwards from the edge's start, forwards from its end
+        for(std::size_t k = step == 1 ? (hit.edge + 1) % nv : hit.edge, walked = 0;
+            reach[i] > 0 && walked < nv && length_2d(minus_2d(loop_xy[k], hit.point)) <= near;
+            k = (k + step) % nv, ++walked)
+          if(is_feature(l, k)) reach[i] = 0;
     }
     struct Local
     {
@@ -558,13 +557,14 @@ public:
       if(!valid) ++m_report.invalid_quads;
       if(bad_angle) ++m_report.bad_angle_quads;
       if(!valid || bad_angle) {
+        auto& requests = valid ? m_report.angle_requests : m_report.refine_requests;
         for(int c = 0; c < 4; ++c)
           if(Q[c] < m_core_points)
-            m_report.refine_requests.emplace_back(m_xy[Q[c]], m_size[Q[c]]);
+            requests.emplace_back(m_xy[Q[c]], m_size[Q[c]]);
         for(int c = 0; c < 4; ++c)
           if(Q[c] >= m_core_points && Q[c] - m_core_points < m_f_core.size()) {
             const std::size_t b = m_f_core[Q[c] - m_core_points];
-            m_report.refine_requests.emplace_back(m_xy[b], m_size[b]);
+            requests.emplace_back(m_xy[b], m_size[b]);
           }
       }
     }
