@@ -230,11 +230,12 @@ public:
 
   /// Runs the stages up to `last` and returns the mesh. Beyond the clearance, where the buffer
   /// layers would have invalid quads the quadtree is refined there and the stages run again,
-  /// at most `max_refinement_rounds` times; a mesh with invalid quads is never returned. Where
-  /// a valid buffer has angles outside [45°, 135°] that no input corner forces, the quadtree
-  /// is refined there in at most `max_angle_rounds` more rounds, which stop at the first
-  /// invalid one; the valid round with the fewest such quads is the one returned (rebuilt if
-  /// a later round was worse).
+  /// at most `max_refinement_rounds` times in all; a mesh with invalid quads is never
+  /// returned. Where a valid buffer has angles outside [45°, 135°] that no input corner
+  /// forces, the quadtree is refined there, in at most `max_angle_rounds` such rounds, each
+  /// kept only while it lowers their count; a round the angle refinement made invalid is
+  /// refined for validity first. The valid round with the fewest such quads is the one
+  /// returned (rebuilt if a later round was worse).
   Mesh run(Stage last = Stage::POINTS)
   {
     m_extra_refinement.clear();
@@ -263,7 +264,8 @@ public:
       // a stage on its way is not refined for angles: they are the finished buffer's
       if(valid && (m_buffer_report.bad_angle_quads == 0 || last < Stage::BUFFER2))
         return mesh;
-      if(valid && m_buffer_report.bad_angle_quads < best_bad) {
+      const bool improved = valid && m_buffer_report.bad_angle_quads < best_bad;
+      if(improved) {
         best_bad = m_buffer_report.bad_angle_quads;
         best_refinement = m_extra_refinement;
       }
@@ -274,10 +276,10 @@ public:
         m_extra_refinement.push_back(r);
         ++added;
       }
-      // once a round was valid, refining for angles must not start a chase for validity
-      const bool more = added > 0
-                        && (best_bad == std::size_t(-1) ? m_rounds < max_refinement_rounds
-                                                        : valid && angle_rounds < max_angle_rounds);
+      // an angle round that came out invalid is refined for validity, within the round budget;
+      // a valid one that did not lower the count ends the angle rounds
+      const bool more = added > 0 && m_rounds < max_refinement_rounds
+                        && (best_bad == std::size_t(-1) || !valid || (improved && angle_rounds < max_angle_rounds));
       if(more) {
         angle_rounds += valid ? 1 : 0;
         continue;
@@ -309,7 +311,7 @@ public:
   /// what the buffer stages did in the last round
   const internal::Buffer_report& buffer_report() const { return m_buffer_report; }
   static constexpr int max_refinement_rounds = 8;
-  static constexpr int max_angle_rounds = 1;
+  static constexpr int max_angle_rounds = 3;
 
   /// quads removed by the clearance: outside, crossing the boundary, near it, single
   const std::array<std::size_t, 4>& removed_by_clearance() const { return m_removed; }

@@ -51,6 +51,7 @@
 #include <map>
 #include <set>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -260,7 +261,9 @@ inline Point_2d right_bisector(const Point_2d& a, const Point_2d& b, const Point
 /// convex and counter-clockwise
 inline double quad_badness(const std::array<Point_2d, 4>& q)
 {
-  double worst = 0;
+  // at a convex corner |angle - 90| = asin(|cos angle|), increasing in |cos|: one asin for
+  // the worst corner instead of an atan2 per corner (the buffer's inner loops call this)
+  double worst_cos = 0;
   for(int c = 0; c < 4; ++c) {
     const Point_2d& p = q[(c + 3) % 4];
     const Point_2d& v = q[c];
@@ -270,9 +273,9 @@ inline double quad_badness(const std::array<Point_2d, 4>& q)
     const double l1 = length_2d(e1), l2 = length_2d(e2);
     if(!(cr > 1e-6 * l1 * l2) || l1 == 0 || l2 == 0) // flat corners count as invalid
       return 1000.0 + (cr < 0 ? 100.0 : 0.0);
-    worst = (std::max)(worst, std::abs(corner_angle_degrees(p, v, n) - 90.0));
+    worst_cos = (std::max)(worst_cos, std::abs(dot_2d(e1, e2)) / (l1 * l2));
   }
-  return worst;
+  return std::asin((std::min)(worst_cos, 1.0)) * (180.0 / 3.14159265358979323846);
 }
 
 /// what the buffer construction did, and where the quadtree should be finer
@@ -636,9 +639,13 @@ public:
         r.invalid += 1 << 20; // folded
       return r;
     };
+    // a vertex whose quads have not changed since it was last tried would not move: only
+    // vertices sharing a quad with a moved one are tried again (same result, far fewer tries)
+    std::vector<char> dirty(m_mesh.points.size(), 1), dirty_next(m_mesh.points.size(), 0);
     for(int pass = 0; pass < passes; ++pass) {
       bool improved = false;
       for(std::size_t v : movable) {
+        if(!dirty[v]) continue;
         const Local current = local_cost(v);
         if(current.worst <= 30.0) continue; // within [60, 120]: good enough
         const Point_2d old = m_xy[v];
@@ -678,9 +685,14 @@ public:
         if(best_p.x != old.x || best_p.y != old.y) {
           m_xy[v] = best_p;
           improved = true;
+          for(std::size_t q : quads_at[v])
+            for(std::size_t w : m_mesh.quads[q])
+              dirty[w] = dirty_next[w] = 1;
         }
       }
       if(!improved) break;
+      dirty.swap(dirty_next);
+      std::fill(dirty_next.begin(), dirty_next.end(), 0);
     }
     // positions back into the kernel: boundary points exactly on their edge
     for(std::size_t v : movable) {
@@ -761,11 +773,16 @@ private:
 
   void add_quad(const Quad& q) { m_mesh.quads.push_back(q); }
 
+  double input_corner_angle(std::size_t v) const
+  {
+    return v < m_corner_angle.size() ? m_corner_angle[v] : std::numeric_limits<double>::quiet_NaN();
+  }
+
   // true if a mesh vertex is an input corner sharper than 45 or more reflex than 270 degrees
   bool forced_corner(std::size_t v) const
   {
-    auto it = m_corner_angle.find(v);
-    return it != m_corner_angle.end() && (it->second < 45.0 || it->second > 270.0);
+    const double a = input_corner_angle(v);
+    return a < 45.0 || a > 270.0; // false for NaN
   }
 
   bool try_move_notch(std::size_t a2, std::size_t a, std::size_t b, std::size_t c, std::size_t c2,
@@ -1151,9 +1168,9 @@ private:
       }
       std::vector<std::pair<double, std::size_t>> corners; // (turn, chain index): the sharpest 4
       for(std::size_t k = 0; k < M0; ++k) {
-        auto it = m_corner_angle.find(gids[k]);
-        if(it != m_corner_angle.end() && std::abs(180.0 - it->second) >= m_feature_angle)
-          corners.emplace_back(std::abs(180.0 - it->second), k);
+        const double turn = std::abs(180.0 - input_corner_angle(gids[k]));
+        if(turn >= m_feature_angle) // false for NaN: not an input vertex
+          corners.emplace_back(turn, k);
       }
       std::sort(corners.rbegin(), corners.rend());
       for(std::size_t j = 0; j < corners.size() && j < 4; ++j) {
@@ -1399,6 +1416,7 @@ private:
     m_input_vertex_ids.insert(id);
     const auto& lv = m_loops.loops[l].vertices;
     const std::size_t nv = lv.size();
+    m_corner_angle.resize(id + 1, std::numeric_limits<double>::quiet_NaN());
     m_corner_angle[id] = 360.0 - right_side_angle(to_point_2d(m_domain.points[lv[(k + nv - 1) % nv]]),
                                                   to_point_2d(m_domain.points[input]),
                                                   to_point_2d(m_domain.points[lv[(k + 1) % nv]]));
@@ -1444,10 +1462,10 @@ private:
   std::vector<std::vector<Point_2d>> m_first;
   std::vector<std::size_t> m_first_base;
   std::vector<std::size_t> m_f_core; // core vertex of each first buffer point
-  std::map<std::size_t, std::size_t> m_input_vertex;
-  std::map<std::size_t, double> m_corner_angle;
-  std::map<std::size_t, Slide> m_slide;
-  std::set<std::size_t> m_input_vertex_ids;
+  std::unordered_map<std::size_t, std::size_t> m_input_vertex;
+  std::vector<double> m_corner_angle; // per mesh point: its input corner's angle, or NaN
+  std::unordered_map<std::size_t, Slide> m_slide;
+  std::unordered_set<std::size_t> m_input_vertex_ids;
   std::vector<char> m_on_cycle; // per core point
   struct Quad_hash
   {
