@@ -19,17 +19,25 @@
 //    at B in [45°, 135°], raises the smallest buffer-side angle at B and its two neighbours and
 //    keeps B and its boundary edges at least h(B)/4 from the boundary. On a uniform staircase
 //    the moved notches fall on the line through the convex corners: every beta becomes 180°.
-// 3. First buffer layer (§4.5): B's first buffer point F lies on the bisector of beta, halfway
-//    (in distance to the boundary) between B and the boundary. Quads B_i F_i F_{i+1} B_{i+1}.
+// 3. First buffer layer (§4.5): B's first buffer point F lies halfway (in distance to the
+//    boundary) between B and the boundary, along the mean of the bisector of beta and the
+//    direction to the nearest boundary point; each F then moves alone to improve its two
+//    first-layer quads and its two projection quads (smooth_first_points). Quads
+//    B_i F_i F_{i+1} B_{i+1}.
 // 4. Second buffer layer (§4.6): F_i is projected onto its boundary loop; the projections,
-//    together with every vertex of the loop, form the boundary chain G. The strip between the
-//    F loop and G is cut into triangles, each with one F edge or one G edge, and consecutive
-//    triangles are paired into quads: F/G pairs are the paper's projection quads, G/G pairs
-//    fan around an F point (the paper's corner quad P-N-M-L of Fig. 8(b)), F/G pairs around a
-//    reflex corner fan at the corner (Fig. 8(d)). Where the F edges meet the G edges and how the
-//    triangles pair is chosen by dynamic programming around each loop, minimising the largest
-//    deviation of an angle from 90° (invalid quads cost more than any valid one). An odd
-//    triangle count is made even by splitting the longest boundary edge.
+//    together with the loop's vertices (those turning by less than 20 degrees may be left out
+//    within the chord tolerance), form the boundary chain G. The strip between the F loop and
+//    G is cut into triangles, each with one F edge or one G edge, and consecutive triangles
+//    are paired into quads: F/G pairs are the paper's projection quads, G/G pairs fan around
+//    an F point (the paper's corner quad P-N-M-L of Fig. 8(b)), F/F pairs around a reflex
+//    corner fan at the corner (Fig. 8(d)). Where the F edges meet the G edges and how the
+//    triangles pair is chosen by dynamic programming around each loop, minimising the sum of
+//    the quads' squared deviations from 90 degrees, with a heavy penalty outside [45, 135] and
+//    a prohibitive one for invalid quads. An odd triangle count is made even by one more chain
+//    node, the candidate the pairing likes best (a left-out loop vertex, a point beside a sharp
+//    corner or where the strip is thickest, the middle of a longest edge).
+// 5. Optimisation: buffer vertices move (boundary ones slide along their edge) while that
+//    lowers the invalid, out-of-range and worst quads around them.
 //
 // Every new quad is then checked with exact predicates (strictly convex, counter-clockwise).
 // Quads that are invalid, or have an angle outside [45°, 135°] that no input corner forces, are
