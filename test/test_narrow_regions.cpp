@@ -75,14 +75,29 @@ TEST(Narrow_regions, more_than_two_cells_across_a_channel)
   }
 }
 
-TEST(Narrow_regions, a_sharp_corner_is_not_a_narrow_region)
+// A needle's sides face each other across a narrowing channel: more than two cells across it
+// beyond the corner zone (an eighth of its sides), but no refinement into the tip itself,
+// which no cell size resolves. A 45-degree corner is no needle.
+TEST(Narrow_regions, a_needle_is_narrow_beyond_its_corner_zone)
 {
+  const double half = 2.5 * M_PI / 180;
   QM::Domain_2<K> d; // a 5-degree needle
-  d.points = { K::Point_2(0, 0), K::Point_2(1, std::tan(2.5 * M_PI / 180)), K::Point_2(1, -std::tan(2.5 * M_PI / 180)) };
+  d.points = { K::Point_2(0, 0), K::Point_2(1, std::tan(half)), K::Point_2(1, -std::tan(half)) };
   d.segments = { { 0, 2 }, { 2, 1 }, { 1, 0 } };
   QM::Quadtree_mesher_2<K> mesher(d, quadtree_only());
   mesher.run(QM::Stage::QUADTREE);
-  EXPECT_LE(mesher.quadtree().depth(), 8);
+  EXPECT_LE(mesher.quadtree().depth(), 10);
+  for(double x : { 0.25, 0.5, 0.9 }) {
+    const double width = 2 * x * std::tan(half);
+    EXPECT_LT(mesher.quadtree().cell_side(mesher.quadtree().locate(K::Point_2(x, 0)).level), width / 2) << x;
+  }
+
+  QM::Domain_2<K> wedge; // 45 degrees: a corner, not a needle
+  wedge.points = { K::Point_2(0, 0), K::Point_2(1, std::tan(M_PI / 8)), K::Point_2(1, -std::tan(M_PI / 8)) };
+  wedge.segments = d.segments;
+  QM::Quadtree_mesher_2<K> corner(wedge, quadtree_only());
+  corner.run(QM::Stage::QUADTREE);
+  EXPECT_LE(corner.quadtree().depth(), 8);
 }
 
 TEST(Narrow_regions, invalid_loops_are_reported)

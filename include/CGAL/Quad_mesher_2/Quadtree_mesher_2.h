@@ -490,7 +490,7 @@ private:
       const int level = level_for_size(s.size);
       if(level > m_tree->max_depth()) {
         std::ostringstream msg;
-        msg << "a narrow region of width " << 3 * s.size << " near (" << s.point[0] << ", "
+        msg << "a narrow region of width " << 4 * s.size << " near (" << s.point[0] << ", "
             << s.point[1] << ") needs quadtree depth " << level << ", beyond "
             << m_tree->depth_limit();
         throw Meshing_error(msg.str());

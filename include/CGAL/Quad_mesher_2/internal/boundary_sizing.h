@@ -27,14 +27,16 @@ namespace internal {
 // gap of width w, the quadtree must have more than two cells across the gap, or a loop could
 // merge with another or vanish when the buffer zone is cleared. We sample the boundary, find
 // for each sample the nearest boundary point that is not just its neighbour along the same
-// loop, and ask for cells of side <= w/3 at the sample, at that nearest point and halfway
+// loop, and ask for cells of side <= w/4 at the sample, at that nearest point and halfway
 // between them. A size field only: computed in doubles.
 //
 // "Not its neighbour": a point r on the same loop counts only if the way from the sample to r
 // along the loop is more than `detour` times the straight distance; a smooth curve bending
 // back on itself (a channel, a fjord) qualifies, a gently curving wall does not. The two
-// segments at a corner never count for each other: a sharp corner is a wedge that no cell
-// size resolves (sharp features are treated apart, paper §5).
+// sides of a corner count for each other only if it is a needle (sharper than 10 degrees) and
+// only beyond the corner zone (an eighth of the shorter side from the corner): the tip of the
+// wedge is left to the corner quad of paper §5, which no cell size could resolve, but farther
+// out a needle's sides face each other across a narrowing channel.
 struct Size_sample
 {
   std::array<double, 2> point;
@@ -71,8 +73,16 @@ public:
     const Segment& here = m_segments[on];
     m_tree.query(Bbox_2(q[0] - reach, q[1] - reach, q[0] + reach, q[1] + reach), [&](std::size_t k) {
       const Segment& s = m_segments[k];
-      if(k == on || adjacent(s, here))
-        return; // a corner's two sides are a wedge, not a narrow region
+      if(k == on)
+        return;
+      // a corner's two sides: near the corner a wedge that no cell size resolves (the corner
+      // quad of paper §5 fills it); farther out, an acute corner's sides face each other
+      // across a narrowing gap like any channel's (a needle)
+      if(adjacent(s, here)) {
+        const P& v = (s.a == here.a || s.a == here.b) ? s.a : s.b;
+        if(!needle_corner(s, here) || std::hypot(q[0] - v[0], q[1] - v[1]) < corner_zone * (std::min)(s.length, here.length))
+          return;
+      }
       double t;
       const P c = closest(s, q, t);
       const double d = std::hypot(c[0] - q[0], c[1] - q[1]);
@@ -92,11 +102,30 @@ public:
 
   const std::vector<Segment>& segments() const { return m_segments; }
 
+  // true if consecutive segments s, r of a loop (domain on the left) make a corner sharper
+  // than `needle_angle` inside the domain. A reflex corner's sides face each other across the
+  // outside, which the domain's cells never need to resolve.
+  static bool needle_corner(const Segment& s, const Segment& r)
+  {
+    const Segment& in = s.b == r.a ? s : r;
+    const Segment& out = s.b == r.a ? r : s;
+    const double ux = in.a[0] - in.b[0], uy = in.a[1] - in.b[1]; // from the corner back along `in`
+    const double vx = out.b[0] - out.a[0], vy = out.b[1] - out.a[1];
+    const double cross = vx * uy - vy * ux, dot = ux * vx + uy * vy;
+    return cross > 0 && std::atan2(cross, dot) < needle_angle * 3.14159265358979323846 / 180;
+  }
+
+  // the part of a corner's sides, as a share of the shorter, left to the corner quad
+  static constexpr double corner_zone = 0.125;
+  // corners sharper than this (degrees) are needles: their sides count for each other
+  static constexpr double needle_angle = 10;
+
 private:
   static bool adjacent(const Segment& s, const Segment& r)
   {
     return s.a == r.a || s.a == r.b || s.b == r.a || s.b == r.b;
   }
+
 
   static P closest(const Segment& s, const P& q, double& t)
   {
@@ -167,8 +196,16 @@ std::vector<Size_sample> narrow_region_samples(const Domain_2<K>& domain, const 
     samples.push_back({ P{ { (q[0] + r[0]) / 2, (q[1] + r[1]) / 2 } }, size });
     return w;
   };
+  std::vector<std::size_t> loop_first; // index of each loop's first segment
+  for(std::size_t k = 0; k < segments.size(); ++k)
+    if(k == 0 || segments[k].loop != segments[k - 1].loop) loop_first.push_back(k);
+  loop_first.push_back(segments.size());
   for(std::size_t k = 0; k < finder.segments().size(); ++k) {
     const auto& s = finder.segments()[k];
+    const std::size_t first = loop_first[s.loop], next_first = loop_first[s.loop + 1];
+    const std::size_t prev = k == first ? next_first - 1 : k - 1;
+    // a needle's sides have no gap in reach within the corner zone: the walk steps past it
+    const bool after_needle = prev != k && Boundary_gap_finder::needle_corner(finder.segments()[prev], s);
     // walk along the segment in steps of a third of the gap just found, so that a channel
     // is sampled all along however its width varies
     const double min_step = s.length / 65536;
@@ -176,7 +213,9 @@ std::vector<Size_sample> narrow_region_samples(const Domain_2<K>& domain, const 
       const double u = t / s.length;
       const double w = add(P{ { s.a[0] + u * (s.b[0] - s.a[0]), s.a[1] + u * (s.b[1] - s.a[1]) } }, k,
                            s.arc_a + t);
-      t += std::isfinite(w) ? (std::max)(w / 3, min_step) : s.length;
+      t += std::isfinite(w)                ? (std::max)(w / 3, min_step)
+           : after_needle && t == 0 ? Boundary_gap_finder::corner_zone * s.length
+                                    : s.length;
     }
   }
   return samples;
