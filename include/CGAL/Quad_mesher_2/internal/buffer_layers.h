@@ -1259,10 +1259,26 @@ private:
       if(removed.empty()) break;
       std::sort(removed.rbegin(), removed.rend());
       removed.erase(std::unique(removed.begin(), removed.end()), removed.end());
-      for(std::size_t remove : removed) { // from the back: earlier positions stay valid
+      auto erase_node = [&](std::size_t remove) {
         gid.erase(gid.begin() + std::ptrdiff_t(remove));
         gparam.erase(gparam.begin() + std::ptrdiff_t(remove));
         for(auto& x : g) if(x >= remove) --x;
+      };
+      for(std::size_t remove : removed) // from the back: earlier positions stay valid
+        erase_node(remove);
+      // An odd triangle count would make solve() put a node back, and with it the flat fan
+      // (attempt after attempt): a neighbour of a removed node goes too, if it may.
+      if((n + gid.size()) % 2 != 0) {
+        const std::size_t M1 = gid.size();
+        auto removable = [&](std::size_t k) { return k != 0 && m_input_vertex_ids.count(gid[k]) == 0; };
+        std::size_t extra = none;
+        for(std::size_t j = 0; j < removed.size() && extra == none; ++j) {
+          // the removed node's successor now sits where it was (positions before it shifted)
+          const std::size_t at = (removed[j] - (removed.size() - 1 - j)) % M1;
+          for(std::size_t k : { at, (at + M1 - 1) % M1 })
+            if(extra == none && removable(k) && chord_within_tolerance(l, gid, gparam, k)) extra = k;
+        }
+        if(extra != none) erase_node(extra);
       }
       best = solve(gid, gparam, g);
     }
