@@ -540,17 +540,27 @@ private:
   }
   static constexpr int boundary_band = 3;
 
-  // where earlier rounds found the buffer layers poor: one level finer than it was there
+  // where earlier rounds found the buffer layers poor: one level finer than it was there.
+  // Every leaf touching the point is refined, not only the one `locate` picks: most requests
+  // are at core vertices, lattice points with four cells around them, and the poor buffer
+  // quads may lie in any of them (refining only the cell up and right of the point left a
+  // buffer quad invalid round after round).
   void refine_at_requests()
   {
     auto make_point = m_traits.construct_point_2_object();
+    const double delta = m_tree->cell_side(m_tree->max_depth()) / 2;
     for(const auto& r : m_extra_refinement) {
-      const Point_2 p = make_point(r.first.x, r.first.y);
-      if(!m_tree->contains(p)) continue;
+      std::vector<Point_2> around;
+      for(int c = 0; c < 4; ++c) {
+        const Point_2 q = make_point(r.first.x + ((c & 1) ? delta : -delta),
+                                     r.first.y + ((c & 2) ? delta : -delta));
+        if(m_tree->contains(q)) around.push_back(q);
+      }
       // at least one level finer than it is there now
-      const int level = (std::max)(r.second > 0 ? level_for_size(r.second / 2) : 0,
-                                   m_tree->locate(p).level + 1);
-      if(level <= m_tree->max_depth()) m_tree->refine_at(p, level);
+      int level = r.second > 0 ? level_for_size(r.second / 2) : 0;
+      for(const Point_2& q : around) level = (std::max)(level, m_tree->locate(q).level + 1);
+      if(level > m_tree->max_depth()) continue;
+      for(const Point_2& q : around) m_tree->refine_at(q, level);
     }
   }
 
