@@ -526,6 +526,28 @@ TEST(Buffer_layers, tiny_disc_far_from_the_origin_meets_45_135)
   expect_angles_45_135(mesh_and_check(polygons({ p }, {}), "disc 1e-4 at 1e5"), "far disc");
 }
 
+// An island with straight sides split into collinear runs and a reflex notch: the strip near
+// (6.37, 7.64) paired a flat fan of boundary nodes; taking its middle node out made the
+// triangle count odd, the node came back, and every refinement round ended with "1 buffer
+// quads are not convex ... after 8 refinement rounds" (both kernels; as in bahamas_islands).
+TEST(Buffer_layers, island_with_collinear_runs_has_no_flat_fan)
+{
+  const std::vector<Point> island = {
+    Point(9.392282422062733, 7.328923306226726), Point(8.61043742449289, 7.779162563781551),
+    Point(7.828592426923048, 8.229401821336376), Point(7.3266418115836345, 8.752670225955875),
+    Point(6.8246911962442205, 9.275938630575375), Point(6.834851917625443, 8.953711717099033),
+    Point(6.845012639006665, 8.63148480362269), Point(6.855173360387887, 8.309257890146348),
+    Point(6.8653340817691095, 7.987030976670007), Point(5.691853889358281, 6.916383993904188),
+    Point(5.941887473391832, 6.63238124883526), Point(6.191921057425382, 6.348378503766332),
+    Point(6.441954641458931, 6.064375758697404), Point(6.691988225492482, 5.780373013628475),
+    Point(7.837980670092542, 6.774900650501053)
+  };
+  const Figures f = mesh_and_check(polygons({ rectangle(0, 0, 10, 10), island }, { Point(7.5, 7.5) }),
+                                   "island with collinear runs");
+  EXPECT_GT(f.quads, 0u);
+  EXPECT_GE(f.share_45_135, 0.99); // measured 0.9992
+}
+
 // Lake Superior: too slow for a unit test (Epick: 7871 quads, 2 rounds, 2.2 s; at 9d349a3
 // 15.7 s, nearly all in Buffer_layers::pair_strip, and a vertex in no quad).
 TEST(Buffer_layers, DISABLED_lake_superior)
