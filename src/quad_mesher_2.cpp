@@ -122,8 +122,8 @@ int run(const Options& opt)
   if(mesher.number_of_merged_points() > 0)
     std::cerr << "quad-mesher: " << opt.input << ": merged " << mesher.number_of_merged_points()
               << " duplicate input point(s)\n";
-  for(const auto& stage : mesher.timings()) {
-    seconds[stage.first] = stage.second;
+  for(const auto& stage : mesher.timings()) { // one entry per stage and refinement round
+    seconds[stage.first] = seconds.value(stage.first, 0.0) + stage.second;
     if(opt.verbose)
       std::cerr << "stage " << stage.first << ": " << stage.second << " s\n";
   }
