@@ -698,6 +698,25 @@ TEST(Buffer_layers, stages_on_triangle_A)
   check_stages(load("triangle_A/triangle_A.poly"), "triangle A", 4);
 }
 
+// run() returns the best valid round, kept from its round when a later angle round was worse:
+// the mesher's state must then be that round's, so the stages run again on its quadtree give
+// the same mesh and the same buffer report (triangle A takes several rounds, the last worse)
+TEST(Buffer_layers, the_returned_round_is_the_mesher_state)
+{
+  const Domain d = load("triangle_A/triangle_A.poly");
+  Mesher mesher(d);
+  const Mesh m = mesher.run(Stage::BUFFER2);
+  ASSERT_GT(mesher.rounds(), 2);
+  const auto report = mesher.buffer_report();
+  Mesh again = mesher.core_mesh();
+  mesher.clear_buffer_zone(again);
+  mesher.fill_buffer_zone(again);
+  EXPECT_EQ(again.quads, m.quads);
+  EXPECT_EQ(again.points, m.points);
+  EXPECT_EQ(mesher.buffer_report().bad_angle_quads, report.bad_angle_quads);
+  EXPECT_EQ(mesher.buffer_report().second_layer_quads, report.second_layer_quads);
+}
+
 // ---- 3. determinism -------------------------------------------------------------------------
 // (each binary has one kernel, so Epick and Epeck are not compared here: two runs must give
 // the same mesh, point for point)

@@ -235,13 +235,14 @@ public:
   /// forces, the quadtree is refined there, in at most `max_angle_rounds` such rounds, each
   /// kept only while it lowers their count; a round the angle refinement made invalid is
   /// refined for validity first. The valid round with the fewest such quads is the one
-  /// returned (rebuilt if a later round was worse).
+  /// returned (kept from its round if a later one was worse).
   Mesh run(Stage last = Stage::POINTS)
   {
     m_extra_refinement.clear();
     std::size_t best_bad = std::size_t(-1);
-    std::vector<std::pair<internal::Point_2d, double>> best_refinement;
-    bool rebuild_best = false;
+    // the best valid round's mesh and state, kept while later rounds try for better angles:
+    // building it again would cost a whole round
+    Round_state best;
     int angle_rounds = 0;
     for(m_rounds = 1;; ++m_rounds) {
       build_quadtree();
@@ -253,8 +254,6 @@ public:
       if(last <= Stage::CLEARANCE)
         return mesh;
       fill_buffer_zone(mesh, last);
-      if(rebuild_best)
-        return mesh;
       // the whole mesh is checked too: a buffer node on another quad's edge would hang
       const Mesh_quality_2 quality = compute_quality(mesh);
       const bool valid = m_buffer_report.failure.empty() && m_buffer_report.invalid_quads == 0
@@ -265,10 +264,8 @@ public:
       if(valid && (m_buffer_report.bad_angle_quads == 0 || last < Stage::BUFFER2))
         return mesh;
       const bool improved = valid && m_buffer_report.bad_angle_quads < best_bad;
-      if(improved) {
+      if(improved)
         best_bad = m_buffer_report.bad_angle_quads;
-        best_refinement = m_extra_refinement;
-      }
       std::size_t added = 0;
       for(const auto& r : requests) {
         const double size = r.second > 0 ? r.second / 2 : 0;
@@ -281,16 +278,15 @@ public:
       const bool more = added > 0 && m_rounds < max_refinement_rounds
                         && (best_bad == std::size_t(-1) || !valid || (improved && angle_rounds < max_angle_rounds));
       if(more) {
+        if(improved)
+          best = save_round(std::move(mesh));
         angle_rounds += valid ? 1 : 0;
         continue;
       }
       if(valid && m_buffer_report.bad_angle_quads == best_bad)
         return mesh; // angles outside [45, 135] stay; the quality report shows them
-      if(best_bad != std::size_t(-1)) {
-        m_extra_refinement = best_refinement;
-        rebuild_best = true;
-        continue;
-      }
+      if(best_bad != std::size_t(-1))
+        return restore_round(std::move(best));
       std::ostringstream msg;
       msg << "the buffer layers could not be built";
       if(!m_buffer_report.failure.empty())
@@ -340,6 +336,52 @@ public:
   const Mesh_criteria_2<GeomTraits>& criteria() const { return m_criteria; }
 
 private:
+  // what run() returns and the accessors show of one round
+  struct Round_state
+  {
+    Mesh mesh;
+    std::unique_ptr<Quadtree> tree;
+    std::vector<internal::Point_anchor> anchors;
+    std::vector<Key_code> vertex_keys;
+    std::vector<Cell_key> quad_cells;
+    std::vector<Point_2> anchored_points;
+    std::array<std::size_t, 4> removed{ { 0, 0, 0, 0 } };
+    std::vector<std::size_t> point_vertices;
+    std::vector<double> core_vertex_size;
+    internal::Buffer_report buffer_report;
+  };
+
+  // takes the current round's state (the next round builds its own)
+  Round_state save_round(Mesh&& mesh)
+  {
+    Round_state r;
+    r.mesh = std::move(mesh);
+    r.tree = std::move(m_tree);
+    r.anchors = std::move(m_anchors);
+    r.vertex_keys = std::move(m_vertex_keys);
+    r.quad_cells = std::move(m_quad_cells);
+    r.anchored_points = std::move(m_anchored_points);
+    r.removed = m_removed;
+    r.point_vertices = std::move(m_point_vertices);
+    r.core_vertex_size = std::move(m_core_vertex_size);
+    r.buffer_report = std::move(m_buffer_report);
+    return r;
+  }
+
+  Mesh restore_round(Round_state&& r)
+  {
+    m_tree = std::move(r.tree);
+    m_anchors = std::move(r.anchors);
+    m_vertex_keys = std::move(r.vertex_keys);
+    m_quad_cells = std::move(r.quad_cells);
+    m_anchored_points = std::move(r.anchored_points);
+    m_removed = r.removed;
+    m_point_vertices = std::move(r.point_vertices);
+    m_core_vertex_size = std::move(r.core_vertex_size);
+    m_buffer_report = std::move(r.buffer_report);
+    return std::move(r.mesh);
+  }
+
   void record(const std::string& stage, std::chrono::steady_clock::time_point start)
   {
     std::chrono::duration<double> d = std::chrono::steady_clock::now() - start;
