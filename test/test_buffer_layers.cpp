@@ -450,7 +450,7 @@ std::vector<Point> wavy_blob()
 {
   std::vector<Point> p;
   for(int i = 0; i < 120; ++i) {
-    const double t = 2 * 3.14159265358979323846 * i / 120;
+    const double t = 2 * pi * i / 120;
     const double r = 1 + 0.25 * std::sin(3 * t) + 0.1 * std::cos(5 * t);
     p.emplace_back(r * std::cos(t), r * std::sin(t));
   }
@@ -460,7 +460,7 @@ std::vector<Point> wavy_blob()
 // two unit discs 4 apart joined by a straight channel 0.02 wide
 std::vector<Point> dumbbell()
 {
-  const double pi = 3.14159265358979323846, a = std::asin(0.01);
+  const double a = std::asin(0.01);
   std::vector<Point> p;
   for(int i = 0; i <= 128; ++i) {
     const double t = -pi + a + (2 * pi - 2 * a) * i / 128;

@@ -592,17 +592,18 @@ private:
     auto make_point = m_traits.construct_point_2_object();
     const double delta = m_tree->cell_side(m_tree->max_depth()) / 2;
     for(const auto& r : m_extra_refinement) {
-      std::vector<Point_2> around;
+      std::array<Point_2, 4> around;
+      std::size_t n = 0;
       for(int c = 0; c < 4; ++c) {
         const Point_2 q = make_point(r.first.x + ((c & 1) ? delta : -delta),
                                      r.first.y + ((c & 2) ? delta : -delta));
-        if(m_tree->contains(q)) around.push_back(q);
+        if(m_tree->contains(q)) around[n++] = q;
       }
       // at least one level finer than it is there now
       int level = r.second > 0 ? level_for_size(r.second / 2) : 0;
-      for(const Point_2& q : around) level = (std::max)(level, m_tree->locate(q).level + 1);
+      for(std::size_t k = 0; k < n; ++k) level = (std::max)(level, m_tree->locate(around[k]).level + 1);
       if(level > m_tree->max_depth()) continue;
-      for(const Point_2& q : around) m_tree->refine_at(q, level);
+      for(std::size_t k = 0; k < n; ++k) m_tree->refine_at(around[k], level);
     }
   }
 

@@ -126,7 +126,6 @@ private:
     return s.a == r.a || s.a == r.b || s.b == r.a || s.b == r.b;
   }
 
-
   static P closest(const Segment& s, const P& q, double& t)
   {
     const double dx = s.b[0] - s.a[0], dy = s.b[1] - s.a[1];

@@ -56,10 +56,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <map>
-#include <set>
 #include <unordered_map>
-#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -614,7 +611,7 @@ public:
     for(const auto& cyc : m_cycles)
       movable.insert(movable.end(), cyc.begin(), cyc.end());
     for(std::size_t v = m_core_points; v < m_mesh.points.size(); ++v)
-      if(m_input_vertex_ids.count(v) == 0)
+      if(!is_input_vertex(v))
         movable.push_back(v);
     // (invalid quads around v, quads outside [45, 135] around it, the worst deviation from
     // 90 degrees), compared in this order: no move may make a quad invalid
@@ -785,6 +782,9 @@ private:
   {
     return v < m_corner_angle.size() ? m_corner_angle[v] : std::numeric_limits<double>::quiet_NaN();
   }
+
+  // every input vertex on the chain has its corner angle
+  bool is_input_vertex(std::size_t v) const { return !std::isnan(input_corner_angle(v)); }
 
   // true if a mesh vertex is an input corner sharper than 45 or more reflex than 270 degrees
   bool forced_corner(std::size_t v) const
@@ -1233,6 +1233,8 @@ private:
     // straight piece of the boundary) cannot be made a quad: such a node is taken out and the
     // strip paired again.
     for(int attempt = 0; attempt < 8 && best.cost.sum >= 1e12; ++attempt) {
+      // a chain node that may be left out: not the first, not an input vertex
+      auto removable = [&](std::size_t k) { return k != 0 && !is_input_vertex(gid[k]); };
       std::vector<std::size_t> removed;
       for(const Quad& q : best.quads) {
         std::size_t remove = none;
@@ -1246,7 +1248,6 @@ private:
         const std::size_t M0 = gid.size();
         // the middle node if it may go, else an end of the fan: with one node fewer nearby the
         // pairing can put the fan elsewhere
-        auto removable = [&](std::size_t k) { return k != 0 && m_input_vertex_ids.count(gid[k]) == 0; };
         for(std::size_t mid : pos) {
           const bool has_prev = std::find(pos.begin(), pos.end(), (mid + M0 - 1) % M0) != pos.end();
           const bool has_next = std::find(pos.begin(), pos.end(), (mid + 1) % M0) != pos.end();
@@ -1270,7 +1271,6 @@ private:
       // (attempt after attempt): a neighbour of a removed node goes too, if it may.
       if((n + gid.size()) % 2 != 0) {
         const std::size_t M1 = gid.size();
-        auto removable = [&](std::size_t k) { return k != 0 && m_input_vertex_ids.count(gid[k]) == 0; };
         std::size_t extra = none;
         for(std::size_t j = 0; j < removed.size() && extra == none; ++j) {
           // the removed node's successor now sits where it was (positions before it shifted)
@@ -1437,7 +1437,6 @@ private:
     m_xy.push_back(to_point_2d(m_domain.points[input]));
     const std::size_t id = m_mesh.points.size() - 1;
     m_input_vertex[input] = id;
-    m_input_vertex_ids.insert(id);
     const auto& lv = m_loops.loops[l].vertices;
     const std::size_t nv = lv.size();
     m_corner_angle.resize(id + 1, std::numeric_limits<double>::quiet_NaN());
@@ -1489,7 +1488,6 @@ private:
   std::unordered_map<std::size_t, std::size_t> m_input_vertex;
   std::vector<double> m_corner_angle; // per mesh point: its input corner's angle, or NaN
   std::unordered_map<std::size_t, Slide> m_slide;
-  std::unordered_set<std::size_t> m_input_vertex_ids;
   std::vector<char> m_on_cycle; // per core point
   struct Quad_hash
   {
