@@ -30,7 +30,8 @@
 //    G is cut into triangles, each with one F edge or one G edge, and consecutive triangles
 //    are paired into quads: F/G pairs are the paper's projection quads, G/G pairs fan around
 //    an F point (the paper's corner quad P-N-M-L of Fig. 8(b)), F/F pairs around a reflex
-//    corner fan at the corner (Fig. 8(d)). Where the F edges meet the G edges and how the
+//    corner fan at the corner (Fig. 8(d)); a corner over 270 degrees keeps three F points on
+//    its node, so that its fan has three quads. Where the F edges meet the G edges and how the
 //    triangles pair is chosen by dynamic programming around each loop, minimising the sum of
 //    the quads' squared deviations from 90 degrees, with a heavy penalty outside [45, 135] and
 //    a prohibitive one for invalid quads. An odd triangle count is made even by one more chain
@@ -40,8 +41,9 @@
 //    lowers the invalid, out-of-range and worst quads around them.
 //
 // Every new quad is then checked with exact predicates (strictly convex, counter-clockwise).
-// Quads that are invalid, or have an angle outside [45°, 135°] that no input corner forces, are
-// reported as refinement requests: the mesher refines the quadtree there and starts again.
+// Quads that are invalid, or have an angle outside [45°, 135°] that no input corner forces (only
+// a corner under 45° does), are reported as refinement requests: the mesher refines the
+// quadtree there and starts again.
 
 #include <CGAL/Quad_mesher_2/Domain_2.h>
 #include <CGAL/Quad_mesher_2/Domain_loops_2.h>
@@ -669,6 +671,35 @@ public:
         }
         lap.x /= nl; lap.y /= nl;
         targets.push_back(lap);
+        // Beside an input corner, v turns about it to share the corner's angle evenly between
+        // the two quads it separates there (the paper's rotated bisectors, §5).
+        for(std::size_t q : quads_at[v]) {
+          const Quad& Q = m_mesh.quads[q];
+          int c = 0;
+          while(Q[c] != v) ++c;
+          for(int side : { 1, 3 }) {
+            const std::size_t corner = Q[(c + side) % 4];
+            if(!is_input_vertex(corner)) continue;
+            const Point_2d& P = m_xy[corner];
+            const Point_2d& w = m_xy[Q[(c + 2 * side) % 4]]; // the corner's other neighbour in q
+            double other = -1; // the corner's angle in the other quad at v
+            for(std::size_t q2 : quads_at[v]) {
+              if(q2 == q) continue;
+              const Quad& R = m_mesh.quads[q2];
+              for(int j = 0; j < 4; ++j)
+                if(R[j] == corner && (R[(j + 1) % 4] == v || R[(j + 3) % 4] == v))
+                  other = corner_angle_degrees(m_xy[R[(j + 3) % 4]], P, m_xy[R[(j + 1) % 4]]);
+            }
+            const double here = corner_angle_degrees(w, P, old);
+            if(other < 0 || here <= 135.0) continue;
+            // turn v towards w by half the difference
+            const double turn = (here - other) / 2 * std::acos(-1.0) / 180;
+            const Point_2d d = minus_2d(old, P), e = minus_2d(w, P);
+            const double sense = d.x * e.y - d.y * e.x > 0 ? 1.0 : -1.0;
+            const double cs = std::cos(sense * turn), sn = std::sin(sense * turn);
+            targets.push_back(Point_2d{ P.x + cs * d.x - sn * d.y, P.y + sn * d.x + cs * d.y });
+          }
+        }
         Point_2d mean{0, 0};
         for(std::size_t k = 0; k + 1 < targets.size(); ++k) { mean.x += targets[k].x; mean.y += targets[k].y; }
         mean.x /= double(targets.size() - 1); mean.y /= double(targets.size() - 1);
@@ -786,11 +817,12 @@ private:
   // every input vertex on the chain has its corner angle
   bool is_input_vertex(std::size_t v) const { return !std::isnan(input_corner_angle(v)); }
 
-  // true if a mesh vertex is an input corner sharper than 45 or more reflex than 270 degrees
+  // true if a mesh vertex is an input corner sharper than 45 degrees: its angle is forced.
+  // A corner over 270 degrees is not: a fan of three quads splits it within [45, 135].
   bool forced_corner(std::size_t v) const
   {
     const double a = input_corner_angle(v);
-    return a < 45.0 || a > 270.0; // false for NaN
+    return a < 45.0; // false for NaN
   }
 
   bool try_move_notch(std::size_t a2, std::size_t a, std::size_t b, std::size_t c, std::size_t c2,
@@ -979,6 +1011,29 @@ private:
     // along the loop around it, one node each, at about their own spacing: the strip stays a
     // ladder and the pairing is left free to fan where it pays.
     for(std::size_t r = 0; r < n; ++r) P[r] = (std::min)(P[r], O + L);
+    // A corner wider than 270 degrees needs three F points on its node for a fan of three
+    // quads: where fewer project onto it, the nearest neighbours (free, on their own nodes)
+    // join them.
+    for(std::size_t a = 1; a + 1 < n; ++a) {
+      const std::size_t k = snap[rot(a)];
+      if(k == none || P[a - 1] == P[a] || domain_angle(l, k) <= 270.0 + 1e-6) continue;
+      std::size_t lo = a, hi = a;
+      while(hi + 1 < n && P[hi + 1] == P[a]) ++hi;
+      const Point_2d corner = loop_xy[k];
+      auto free_point = [&](std::size_t r) {
+        return r > 0 && r + 1 < n && snap[rot(r)] == none && P[r - 1] != P[r] && P[r + 1] != P[r];
+      };
+      while(hi - lo < 2) {
+        const bool before = free_point(lo - 1), after = hi + 2 < n && free_point(hi + 1);
+        if(!before && !after) break;
+        const double db = before ? length_2d(minus_2d(F[rot(lo - 1)], corner)) : HUGE_VAL;
+        const double da = after ? length_2d(minus_2d(F[rot(hi + 1)], corner)) : HUGE_VAL;
+        const std::size_t r = db <= da ? --lo : ++hi;
+        P[r] = P[a];
+        snap[rot(r)] = k;
+      }
+      a = hi;
+    }
     for(std::size_t a = 0; a < n;) {
       std::size_t b = a;
       while(b + 1 < n && P[b + 1] == P[a]) ++b;
@@ -989,7 +1044,17 @@ private:
       const double after = b + 1 < n ? P[b + 1] : O + L;
       // the anchor keeps the node; at the start it must stay first, at the end nothing may
       // reach the start again
-      const std::size_t anchor = a == 0 ? 0 : (at_end ? n : (a + b) / 2);
+      std::size_t anchor = a == 0 ? 0 : (at_end ? n : (a + b) / 2);
+      // Around a corner wider than 270 degrees three of them (the middle ones) stay on the
+      // corner's node. The pairing can make a node the apex of one F triangle per gap it
+      // bounds: two spread nodes leave the corner two quads, over 135 degrees each; three F
+      // points on it make a fan of three (paper Fig. 8(d)).
+      std::size_t last_kept = anchor;
+      if(!at_end && snap[rot(a)] != none && domain_angle(l, snap[rot(a)]) > 270.0 + 1e-6) {
+        const std::size_t first_kept = a == 0 ? 0 : (std::max)(a, anchor - 1);
+        last_kept = (std::min)(b, first_kept + 2);
+        anchor = first_kept;
+      }
       auto spacing = [&](std::size_t r1, std::size_t r2) {
         return length_2d(minus_2d(F[rot(r1)], F[rot(r2)]));
       };
@@ -1004,17 +1069,17 @@ private:
           hit[rot(r)] = locate_param(l, s);
         }
       }
-      if(anchor < n && b > anchor) { // anchor+1 .. b go after p0
-        const double room = (after - p0) / double(b - anchor + 1);
+      if(anchor < n && b > last_kept) { // last_kept+1 .. b go after p0
+        const double room = (after - p0) / double(b - last_kept + 1);
         double s = p0;
-        for(std::size_t r = anchor + 1; r <= b; ++r) {
+        for(std::size_t r = last_kept + 1; r <= b; ++r) {
           s += (std::min)(room, spacing(r, r - 1));
           P[r] = s;
           snap[rot(r)] = none;
           hit[rot(r)] = locate_param(l, s);
         }
       }
-      for(std::size_t r = a; r <= b; ++r) share[r] = none;
+      for(std::size_t r = a; r <= b; ++r) share[r] = r > anchor && r <= last_kept ? anchor : none;
       a = b + 1;
     }
 
@@ -1416,6 +1481,14 @@ private:
       if(s < s1 && point_segment_distance(v[j], A, B) > m_chord_tolerance) return false;
     }
     return point_segment_distance(m_xy[gid[k]], A, B) <= m_chord_tolerance;
+  }
+
+  // the angle of loop l at its vertex k on the domain's side (the loops have it on their left)
+  double domain_angle(std::size_t l, std::size_t k) const
+  {
+    const auto& xy = m_locator->loop(l);
+    const std::size_t nv = xy.size();
+    return 360.0 - right_side_angle(xy[(k + nv - 1) % nv], xy[k], xy[(k + 1) % nv]);
   }
 
   // a loop vertex the mesh must keep: it turns the boundary by the feature angle or more
