@@ -131,10 +131,13 @@ int main(int argc, char** argv)
   Segments boundary;
   for(const auto& s : domain.segments)
     boundary.emplace_back(domain.points[s[0]], domain.points[s[1]]);
+  // close-ups (the chord is 1): the air foil, and its trailing edge
   const double x = T.x(), y = T.y();
+  const Iso_rectangle_2 foil_window(x - 1.3, y - 0.5, x + 0.3, y + 0.5);
+  const Iso_rectangle_2 edge_window(x - 0.06, y - 0.03, x + 0.02, y + 0.03);
   if(!QM::IO::write_MSH(name + ".msh", mesh) || !QM::IO::write_SVG(name + ".svg", mesh, boundary) ||
-     !write_window_SVG(name + "_near.svg", mesh, boundary, Iso_rectangle_2(x - 1.3, y - 0.5, x + 0.3, y + 0.5)) ||
-     !write_window_SVG(name + "_trailing_edge.svg", mesh, boundary, Iso_rectangle_2(x - 0.06, y - 0.03, x + 0.02, y + 0.03))) {
+     !write_window_SVG(name + "_near.svg", mesh, boundary, foil_window) ||
+     !write_window_SVG(name + "_trailing_edge.svg", mesh, boundary, edge_window)) {
     std::cerr << "cannot write " << name << ".msh or its pictures" << std::endl;
     return 1;
   }
