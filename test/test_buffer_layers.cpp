@@ -512,8 +512,9 @@ TEST(Buffer_layers, corner_cases_give_valid_meshes)
     if(alpha == 90.0 || alpha == 136.0 || alpha == 269.0)
       expect_angles_45_135(f, name);
     // the quads beside the 181-degree apex turn about it to share its angle (0.9565 before)
-    if(alpha == 181.0)
+    if(alpha == 181.0) {
       EXPECT_GE(f.share_45_135, 0.99) << name;
+    }
   }
 }
 
