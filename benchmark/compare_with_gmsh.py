@@ -15,7 +15,8 @@ For each case, one process at a time:
     input point; F = --gmsh-size-factor, default 1);
   * verify_mesh.py MESH --domain CASE.poly --no-overlap --json on every mesh, ours and Gmsh's.
 Writes OUT_DIR/comparison.json (every figure of every mesh) and OUT_DIR/comparison.md (one row
-per case: ours / Gmsh's best variant).  Gmsh's best variant is the all-quad mesh with, in turn:
+per case: ours / Gmsh's best variant; H is the boundary's Hausdorff distance over the
+domain's diagonal).  Gmsh's best variant is the all-quad mesh with, in turn:
 every check but angles_45_135 passed ("valid"), the smallest worst angle (largest distance
 of an angle from 90 deg, to 0.01 deg), the fewest angles outside [45, 135] that no input
 corner forces ("unforced": not at an input corner below 45 or above 270 deg).  Times are wall
@@ -117,16 +118,17 @@ def cell(R, what):
         return "%d (%d)" % (v, R["out_unforced"])
     if what == "valid":
         return "yes" if v else "no: " + ", ".join(R["failed_checks"])
-    return {"angle_min": "%.1f°", "angle_max": "%.1f°", "seconds": "%.1f s"}.get(what, "%s") % v
+    return {"angle_min": "%.1f°", "angle_max": "%.1f°", "hausdorff_rel": "%.1e", "seconds": "%.1f s"}.get(
+        what, "%s") % v
 
 
 def markdown(rows, meta):
-    head = ["case", "quads", "vertices", "min angle", "max angle", "in [45°,135°]", "out (unforced)", "valid",
+    head = ["case", "quads", "vertices", "min angle", "max angle", "in [45°,135°]", "out (unforced)", "H", "valid",
             "wall time", "our depth", "Gmsh variant"]
     L = ["%s; %s; Gmsh %s, variants %s, sizes %g x the shortest incident segment, timeout %g s per run. "
          "Each cell: ours / Gmsh's best." % (meta["date"], meta["machine"], meta["gmsh_version"],
                                               ", ".join(GMSH_VARIANTS), meta["gmsh_size_factor"], meta["timeout"]), "",
-        "| " + " | ".join(head) + " |", "| --- |" + " ---: |" * 6 + " --- | ---: | ---: | --- |"]
+        "| " + " | ".join(head) + " |", "| --- |" + " ---: |" * 7 + " --- | ---: | ---: | --- |"]
     for r in rows:
         o, g = r["ours"], r["gmsh"].get(r["gmsh_best"]) if r["gmsh_best"] else None
         if r["gmsh_best"]:
@@ -138,7 +140,7 @@ def markdown(rows, meta):
             variant += "; ours: " + o["status"]
         L.append("| " + " | ".join([r["case"]] + ["%s / %s" % (cell(o, w), cell(g, w)) for w in
                                    ("quads", "vertices", "angle_min", "angle_max", "share_45_135", "out",
-                                    "valid", "seconds")] + [str(o.get("quadtree_depth", "—")), variant]) + " |")
+                                    "hausdorff_rel", "valid", "seconds")] + [str(o.get("quadtree_depth", "—")), variant]) + " |")
     return "\n".join(L) + "\n"
 
 
