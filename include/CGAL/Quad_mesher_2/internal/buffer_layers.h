@@ -558,12 +558,17 @@ public:
       for(int c = 0; c < 4 && valid; ++c)
         valid = corner_scaled_jacobian(P[(c + 3) % 4], P[c], P[(c + 1) % 4]) > 1e-9;
       bool bad_angle = false;
-      if(valid)
-        for(int c = 0; c < 4; ++c) {
-          const double a = corner_angle_degrees(P[(c + 3) % 4], P[c], P[(c + 1) % 4]);
-          if((a < 45.0 - 1e-9 || a > 135.0 + 1e-9) && !forced_corner(Q[c]))
+      if(valid) {
+        std::array<double, 4> a;
+        for(int c = 0; c < 4; ++c) a[c] = corner_angle_degrees(P[(c + 3) % 4], P[c], P[(c + 1) % 4]);
+        // a quad spanning a corner alpha under 45 degrees may have angles in [alpha, 180 - alpha]
+        double lo = 45.0;
+        for(int c = 0; c < 4; ++c)
+          if(forced_angle(Q[c], a[c])) lo = (std::min)(lo, input_corner_angle(Q[c]));
+        for(int c = 0; c < 4; ++c)
+          if((a[c] < lo - 1e-9 || a[c] > 180.0 - lo + 1e-9) && !forced_angle(Q[c], a[c]))
             bad_angle = true;
-        }
+      }
       if(!valid) ++m_report.invalid_quads;
       if(bad_angle) ++m_report.bad_angle_quads;
       if(!valid || bad_angle) {
@@ -817,12 +822,14 @@ private:
   // every input vertex on the chain has its corner angle
   bool is_input_vertex(std::size_t v) const { return !std::isnan(input_corner_angle(v)); }
 
-  // true if a mesh vertex is an input corner sharper than 45 degrees: its angle is forced.
-  // A corner over 270 degrees is not: a fan of three quads splits it within [45, 135].
-  bool forced_corner(std::size_t v) const
+  // true if `angle`, a quad's angle at mesh vertex v, is forced: v is an input corner sharper
+  // than 45 degrees and the quad spans all of it (one quad there keeps its angles in
+  // [alpha, 180 - alpha]; a split corner has less). A corner over 270 degrees forces nothing:
+  // a fan of three quads splits it within [45, 135].
+  bool forced_angle(std::size_t v, double angle) const
   {
-    const double a = input_corner_angle(v);
-    return a < 45.0; // false for NaN
+    const double alpha = input_corner_angle(v);
+    return alpha < 45.0 && angle >= alpha - 1e-3; // false for NaN
   }
 
   bool try_move_notch(std::size_t a2, std::size_t a, std::size_t b, std::size_t c, std::size_t c2,
@@ -900,14 +907,17 @@ private:
     std::array<Point_2d, 4> P;
     for(int k = 0; k < 4; ++k) P[k] = m_xy[q[k]];
     double b = quad_badness(P);
-    // an angle an input corner forces is not the strip's fault
+    // an angle an input corner alpha forces is not the strip's fault, and the quad's other
+    // angles may use [alpha, 180 - alpha]: their deviation from 90 is scaled so that this range
+    // costs what [45, 135] costs elsewhere
     if(b < 1000.0)
       for(int k = 0; k < 4; ++k)
-        if(forced_corner(q[k])) {
+        if(forced_angle(q[k], corner_angle_degrees(P[(k + 3) % 4], P[k], P[(k + 1) % 4]))) {
+          const double scale = 45.0 / (90.0 - input_corner_angle(q[k]));
           b = 0;
           for(int j = 0; j < 4; ++j)
             if(j != k)
-              b = (std::max)(b, std::abs(corner_angle_degrees(P[(j + 3) % 4], P[j], P[(j + 1) % 4]) - 90.0));
+              b = (std::max)(b, scale * std::abs(corner_angle_degrees(P[(j + 3) % 4], P[j], P[(j + 1) % 4]) - 90.0));
           break;
         }
     return b;
