@@ -912,7 +912,8 @@ private:
     // costs what [45, 135] costs elsewhere
     if(b < 1000.0)
       for(int k = 0; k < 4; ++k)
-        if(forced_angle(q[k], corner_angle_degrees(P[(k + 3) % 4], P[k], P[(k + 1) % 4]))) {
+        if(input_corner_angle(q[k]) < 45.0 // cheap test first: the cost runs in inner loops
+           && forced_angle(q[k], corner_angle_degrees(P[(k + 3) % 4], P[k], P[(k + 1) % 4]))) {
           const double scale = 45.0 / (90.0 - input_corner_angle(q[k]));
           b = 0;
           for(int j = 0; j < 4; ++j)
