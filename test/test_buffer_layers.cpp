@@ -532,15 +532,9 @@ Domain box_with_spiked_island(double width_degrees)
 std::vector<double> angles_at(const Mesh& m, const Point& corner)
 {
   std::vector<double> angles;
-  for(const auto& q : m.quads)
+  for(std::size_t q = 0; q < m.quads.size(); ++q)
     for(int c = 0; c < 4; ++c)
-      if(m.points[q[c]] == corner) {
-        const Point& a = m.points[q[(c + 3) % 4]];
-        const Point& b = m.points[q[(c + 1) % 4]];
-        const double ux = to_d(a.x()) - to_d(corner.x()), uy = to_d(a.y()) - to_d(corner.y());
-        const double vx = to_d(b.x()) - to_d(corner.x()), vy = to_d(b.y()) - to_d(corner.y());
-        angles.push_back(std::atan2(std::abs(ux * vy - uy * vx), ux * vx + uy * vy) * 180 / pi);
-      }
+      if(m.points[m.quads[q][c]] == corner) angles.push_back(qm2_checks::corner_angle(m, q, c));
   return angles;
 }
 

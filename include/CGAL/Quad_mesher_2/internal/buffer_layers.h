@@ -698,7 +698,7 @@ public:
             const double here = corner_angle_degrees(w, P, old);
             if(other < 0 || here <= 135.0) continue;
             // turn v towards w by half the difference
-            const double turn = (here - other) / 2 * std::acos(-1.0) / 180;
+            const double turn = (here - other) / 2 * 3.14159265358979323846 / 180;
             const Point_2d d = minus_2d(old, P), e = minus_2d(w, P);
             const double sense = d.x * e.y - d.y * e.x > 0 ? 1.0 : -1.0;
             const double cs = std::cos(sense * turn), sn = std::sin(sense * turn);
@@ -976,8 +976,7 @@ private:
       for(std::size_t i = 0; i < n; ++i) if(snap[i] != none) vertex_taken[snap[i]] = true;
       for(std::size_t k = 0; k < nv; ++k) {
         if(vertex_taken[k] || !is_feature(l, k)) continue;
-        const double interior = 360.0 - right_side_angle(loop_xy[(k + nv - 1) % nv], loop_xy[k], loop_xy[(k + 1) % nv]);
-        if(interior <= 135.0) continue;
+        if(domain_angle(l, k) <= 135.0) continue;
         const double a = m_locator->arc(l, k);
         auto it = std::lower_bound(by_param.begin(), by_param.end(), a,
                                    [&](std::size_t x, double v) { return raw[x] < v; });
@@ -1027,7 +1026,7 @@ private:
     // join them.
     for(std::size_t a = 1; a + 1 < n; ++a) {
       const std::size_t k = snap[rot(a)];
-      if(k == none || P[a - 1] == P[a] || domain_angle(l, k) <= 270.0 + 1e-6) continue;
+      if(k == none || P[a - 1] == P[a] || !needs_fan_of_three(l, k)) continue;
       std::size_t lo = a, hi = a;
       while(hi + 1 < n && P[hi + 1] == P[a]) ++hi;
       const Point_2d corner = loop_xy[k];
@@ -1061,7 +1060,7 @@ private:
       // bounds: two spread nodes leave the corner two quads, over 135 degrees each; three F
       // points on it make a fan of three (paper Fig. 8(d)).
       std::size_t last_kept = anchor;
-      if(!at_end && snap[rot(a)] != none && domain_angle(l, snap[rot(a)]) > 270.0 + 1e-6) {
+      if(!at_end && snap[rot(a)] != none && needs_fan_of_three(l, snap[rot(a)])) {
         const std::size_t first_kept = a == 0 ? 0 : (std::max)(a, anchor - 1);
         last_kept = (std::min)(b, first_kept + 2);
         anchor = first_kept;
@@ -1501,6 +1500,9 @@ private:
     const std::size_t nv = xy.size();
     return 360.0 - right_side_angle(xy[(k + nv - 1) % nv], xy[k], xy[(k + 1) % nv]);
   }
+
+  // a corner wider than 270 degrees: two quads there would each have over 135 degrees
+  bool needs_fan_of_three(std::size_t l, std::size_t k) const { return domain_angle(l, k) > 270.0 + 1e-6; }
 
   // a loop vertex the mesh must keep: it turns the boundary by the feature angle or more
   bool is_feature(std::size_t l, std::size_t k) const
