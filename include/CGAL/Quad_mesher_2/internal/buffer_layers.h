@@ -34,9 +34,10 @@
 //    its node, so that its fan has three quads. Where the F edges meet the G edges and how the
 //    triangles pair is chosen by dynamic programming around each loop, minimising the sum of
 //    the quads' squared deviations from 90 degrees, with a heavy penalty outside [45, 135] and
-//    a prohibitive one for invalid quads. An odd triangle count is made even by one more chain
-//    node, the candidate the pairing likes best (a left-out loop vertex, a point beside a sharp
-//    corner or where the strip is thickest, the middle of a longest edge).
+//    a prohibitive one for invalid quads. Each gap may also take one more chain node (the
+//    middle of its longest edge): the pairing decides where, which is how an odd triangle
+//    count is made even and how a long ladder switches between its two phases (a ladder can
+//    only switch at a gap with an even number of G edges; without one it shears end to end).
 // 5. Optimisation: buffer vertices move (boundary ones slide along their edge) while that
 //    lowers the invalid, out-of-range and worst quads around them.
 //
@@ -1134,7 +1135,6 @@ private:
     // Loop vertices that are no corners (they turn the boundary by less than the feature
     // angle) and hold no node may be left out where the chord between the kept nodes around
     // them stays within the tolerance (Douglas-Peucker): that keeps the strip a ladder.
-    std::vector<std::pair<double, std::size_t>> dropped; // (deviation, node)
     {
       const std::size_t N = nodes.size();
       std::vector<std::size_t> kept_at;
@@ -1164,14 +1164,6 @@ private:
           runs.emplace_back(at, b);
         }
       }
-      for(std::size_t k = 0; k < N; ++k)
-        if(!nodes[k].keep) {
-          // its distance from the chord of its kept neighbours
-          std::size_t a = (k + N - 1) % N, b = (k + 1) % N;
-          while(!nodes[a].keep) a = (a + N - 1) % N;
-          while(!nodes[b].keep) b = (b + 1) % N;
-          dropped.emplace_back(point_segment_distance(nodes[k].xy, nodes[a].xy, nodes[b].xy), k);
-        }
     }
     std::vector<Node> chain;
     std::vector<std::size_t> chain_of_node(nodes.size(), none);
@@ -1206,104 +1198,80 @@ private:
     std::vector<std::size_t> fid(n);
     for(std::size_t r = 0; r < n; ++r) fid[r] = fbase + rot(r);
 
-    // n F edges and M G edges make n + M triangles, paired into quads. If that is odd, one
-    // more node goes in: a dropped vertex (the farthest from its chord), or a point beside a
-    // corner, or in the middle of one of the longest edges; the pairing decides.
-    std::sort(dropped.rbegin(), dropped.rend());
-    std::vector<std::pair<double, std::size_t>> dropped_params; // (param, vertex)
-    for(std::size_t j = 0; j < dropped.size() && j < 2; ++j)
-      dropped_params.emplace_back(nodes[dropped[j].second].param, nodes[dropped[j].second].vertex);
     std::vector<double> gparam(gid.size());
     for(std::size_t k = 0; k < gid.size(); ++k) gparam[k] = chain[k].param;
-    auto solve = [&](std::vector<std::size_t>& gids, std::vector<double>& params, std::vector<std::size_t>& gs) {
-      const std::size_t M0 = gids.size();
-      if((n + M0) % 2 == 0) return pair_strip(fid, gids, gs);
-      struct Insert { std::size_t after; Point_2d xy; std::size_t vertex; double t; double param; };
-      std::vector<Insert> inserts;
-      for(const auto& d : dropped_params) {
-        const std::size_t after = std::size_t(std::upper_bound(params.begin(), params.end(), d.first) - params.begin()) - 1;
-        if(after < M0) inserts.push_back({ after, loop_xy[d.second], d.second, 0, d.first });
-      }
-      auto edge_len = [&](std::size_t k) { return length_2d(minus_2d(m_xy[gids[(k + 1) % M0]], m_xy[gids[k]])); };
-      std::vector<std::pair<double, std::size_t>> edges;
-      for(std::size_t k = 0; k < M0; ++k) edges.emplace_back(edge_len(k), k);
-      std::sort(edges.rbegin(), edges.rend());
-      auto between = [&](std::size_t k, double t) {
-        const Point_2d A = m_xy[gids[k]], B = m_xy[gids[(k + 1) % M0]];
-        const double pb = k + 1 < M0 ? params[k + 1] : params[0] + L;
-        return Insert{ k, along_2d(A, B, t), none, t,
-                       params[k] + t * (pb - params[k]) };
-      };
-      for(std::size_t j = 0; j < edges.size() && j < 3; ++j) inserts.push_back(between(edges[j].second, 0.5));
-      // where the strip is thickest for its F spacing: the fan the extra node makes needs
-      // room, and elsewhere the pairing would rather shear a long thin stretch
-      std::vector<std::pair<double, std::size_t>> thick; // (thickness / spacing, chain edge)
-      for(std::size_t r = 0; r < n; ++r) {
-        if(gs[r] >= M0) continue;
-        const double spacing = length_2d(minus_2d(m_xy[fid[(r + 1) % n]], m_xy[fid[r]]));
-        if(spacing > 0)
-          thick.emplace_back(length_2d(minus_2d(m_xy[fid[r]], m_xy[gids[gs[r]]])) / spacing, gs[r]);
-      }
-      std::sort(thick.rbegin(), thick.rend());
-      for(std::size_t j = 0; j < thick.size() && j < 4; ++j) {
-        inserts.push_back(between(thick[j].second, 0.5));
-        inserts.push_back(between((thick[j].second + M0 - 1) % M0, 0.5));
-      }
-      std::vector<std::pair<double, std::size_t>> corners; // (turn, chain index): the sharpest 4
-      for(std::size_t k = 0; k < M0; ++k) {
-        const double turn = std::abs(180.0 - input_corner_angle(gids[k]));
-        if(turn >= m_feature_angle) // false for NaN: not an input vertex
-          corners.emplace_back(turn, k);
-      }
-      std::sort(corners.rbegin(), corners.rend());
-      for(std::size_t j = 0; j < corners.size() && j < 4; ++j) {
-        inserts.push_back(between((corners[j].second + M0 - 1) % M0, 0.7));
-        inserts.push_back(between(corners[j].second, 0.3));
-      }
-      Strip_result best;
-      std::size_t chosen = none;
-      auto with_insert = [&](const Insert& ins, std::size_t id, std::vector<std::size_t>& g2id,
-                             std::vector<std::size_t>& g2) {
-        g2id = gids;
-        g2id.insert(g2id.begin() + std::ptrdiff_t(ins.after + 1), id);
-        g2 = gs;
-        for(auto& x : g2) if(x > ins.after) ++x;
-      };
-      // candidate points get ids of their own past the mesh's points (the cost cache knows
-      // quads by their ids), dropped again afterwards
+    // n F edges and M G edges make n + M triangles, paired into quads. Every gap may take one
+    // more chain node, in the middle of its longest edge (on the loop there, or on a left-out
+    // loop vertex near it): the pairing decides where. It switches a ladder of quads between
+    // its two phases, and makes an odd triangle count even, where that costs least.
+    auto solve = [&]() {
+      const std::size_t M0 = gid.size();
+      std::vector<Extra_node> extra(n);
+      struct Site { std::size_t vertex; double param; };
+      std::vector<Site> sites(n);
       const std::size_t first_candidate = m_xy.size();
-      for(const Insert& ins : inserts) m_xy.push_back(ins.xy);
-      for(std::size_t j = 0; j < inserts.size(); ++j) {
-        std::vector<std::size_t> g2id, g2;
-        with_insert(inserts[j], first_candidate + j, g2id, g2);
-        Strip_result res = pair_strip(fid, g2id, g2);
-        if(res.cost < best.cost) { best = std::move(res); chosen = j; }
+      for(std::size_t r = 0; r < n; ++r) {
+        const std::size_t g0 = g[r], k = (r + 1 < n ? g[r + 1] : M0) - g0;
+        if(g0 >= M0 || k == 0) continue;
+        std::size_t e = 0;
+        double longest = -1;
+        for(std::size_t j = 0; j < k; ++j) {
+          const double len = length_2d(minus_2d(m_xy[gid[(g0 + j + 1) % M0]], m_xy[gid[g0 + j]]));
+          if(len > longest) { longest = len; e = j; }
+        }
+        const double a = gparam[g0 + e], b = g0 + e + 1 < M0 ? gparam[g0 + e + 1] : gparam[0] + L;
+        const double mid = 0.5 * (a + b);
+        const Loop_locator::Hit h = locate_param(l, mid);
+        // a left-out loop vertex near the middle keeps the input's own point
+        Site site{ none, mid };
+        Point_2d xy = h.point;
+        double nearest = 0.25 * (b - a);
+        for(std::size_t v : { h.edge, (h.edge + 1) % nv }) {
+          const double sv = mid + cyclic(m_locator->arc(l, v) - mid);
+          if(std::abs(sv - mid) < nearest) {
+            nearest = std::abs(sv - mid);
+            site = Site{ v, sv };
+            xy = loop_xy[v];
+          }
+        }
+        sites[r] = site;
+        extra[r] = Extra_node{ e, m_xy.size() };
+        m_xy.push_back(xy);
       }
+      Strip_result res = pair_strip(fid, gid, g, extra);
+      // the candidates had ids of their own past the mesh's points (the cost cache knows quads
+      // by their ids); the chosen ones become mesh points
       m_xy.resize(first_candidate);
       for(auto it = m_cost_cache.begin(); it != m_cost_cache.end();) {
         bool candidate = false;
         for(std::size_t v : it->first) candidate = candidate || v >= first_candidate;
         it = candidate ? m_cost_cache.erase(it) : std::next(it);
       }
-      if(chosen == none) return best;
-      const Insert& ins = inserts[chosen];
-      // a new node lies on the loop itself (at its parameter), never on a chord
-      std::size_t id;
-      if(ins.vertex != none) {
-        id = input_vertex_point(l, ins.vertex);
-      } else {
-        const Loop_locator::Hit h = locate_param(l, ins.param);
-        id = point_on_edge(l, h.edge, h.t);
+      std::unordered_map<std::size_t, std::size_t> real_id;
+      for(std::size_t r = n; r-- > 0;) { // from the back: earlier chain positions stay valid
+        if(!res.inserted[r]) continue;
+        std::size_t id;
+        if(sites[r].vertex != none) {
+          id = input_vertex_point(l, sites[r].vertex);
+        } else {
+          const Loop_locator::Hit h = locate_param(l, sites[r].param);
+          id = point_on_edge(l, h.edge, h.t);
+        }
+        real_id[extra[r].id] = id;
+        const std::size_t after = g[r] + extra[r].edge;
+        gid.insert(gid.begin() + std::ptrdiff_t(after + 1), id);
+        gparam.insert(gparam.begin() + std::ptrdiff_t(after + 1), sites[r].param);
+        for(auto& x : g) if(x > after) ++x;
       }
-      std::vector<std::size_t> g2id, g2;
-      with_insert(ins, id, g2id, g2);
-      gids = std::move(g2id);
-      gs = std::move(g2);
-      params.insert(params.begin() + std::ptrdiff_t(ins.after + 1), ins.param);
-      return pair_strip(fid, gids, gs);
+      for(Quad& q : res.quads)
+        for(std::size_t& v : q) {
+          auto it = real_id.find(v);
+          if(it != real_id.end()) v = it->second;
+        }
+      return res;
     };
     m_cache_costs = true;
-    Strip_result best = solve(gid, gparam, g);
+    Strip_result best = solve();
     // A fan of boundary edges that is flat (its middle node is no input vertex and lies on a
     // straight piece of the boundary) cannot be made a quad: such a node is taken out and the
     // strip paired again.
@@ -1342,8 +1310,8 @@ private:
       };
       for(std::size_t remove : removed) // from the back: earlier positions stay valid
         erase_node(remove);
-      // An odd triangle count would make solve() put a node back, and with it the flat fan
-      // (attempt after attempt): a neighbour of a removed node goes too, if it may.
+      // An odd triangle count would make the pairing put a node back, likely in the same
+      // gap and with it the flat fan: a neighbour of a removed node goes too, if it may.
       if((n + gid.size()) % 2 != 0) {
         const std::size_t M1 = gid.size();
         std::size_t extra = none;
@@ -1355,7 +1323,7 @@ private:
         }
         if(extra != none) erase_node(extra);
       }
-      best = solve(gid, gparam, g);
+      best = solve();
     }
     m_cache_costs = false;
     m_cost_cache.clear();
@@ -1378,15 +1346,23 @@ private:
   {
     Cost cost;
     std::vector<Quad> quads;
+    std::vector<bool> inserted; // per gap: whether it took its extra node
+  };
+
+  // the extra chain node a gap may take: after its `edge`-th chain edge, mesh id `id`
+  struct Extra_node
+  {
+    std::size_t edge = none, id = none;
   };
 
   // Dynamic programming over the gaps of a strip. Gap r lies between F points r, r+1 (mesh
-  // ids fid) and chain nodes g[r] .. g[r+1] (g[n] = M wraps to 0); `mid` of its G triangles
-  // (apex F_r) come before its F triangle, the rest (apex F_{r+1}) after. State: 0 = no
-  // triangle pending; 1 = the gap's F triangle is pending (it came last); 2 = its last G
-  // triangle is.
+  // ids fid) and chain nodes g[r] .. g[r+1] (g[n] = M wraps to 0), plus its extra node if it
+  // takes it; `mid` of its G triangles (apex F_r) come before its F triangle, the rest (apex
+  // F_{r+1}) after. State: 0 = no triangle pending; 1 = the gap's F triangle is pending (it
+  // came last); 2 = its last G triangle is; 3 = the same, that triangle's first node being
+  // the gap's extra node.
   Strip_result pair_strip(const std::vector<std::size_t>& fid, const std::vector<std::size_t>& gid,
-                          const std::vector<std::size_t>& g) const
+                          const std::vector<std::size_t>& g, const std::vector<Extra_node>& extra) const
   {
     const std::size_t n = fid.size(), M = gid.size();
     std::vector<std::size_t> k_of(n);
@@ -1394,53 +1370,67 @@ private:
     k_of[n - 1] = M - g[n - 1];
     auto F = [&](std::size_t r) { return fid[r % n]; };
     auto G = [&](std::size_t k) { return gid[k % M]; };
-    auto triangles = [&](std::size_t r, std::size_t mid) {
+    auto node = [&](std::size_t r, bool ins, std::size_t e) { // the e-th node of gap r
+      if(!ins || e <= extra[r].edge) return G(g[r] + e);
+      return e == extra[r].edge + 1 ? extra[r].id : G(g[r] + e - 1);
+    };
+    auto triangles = [&](std::size_t r, bool ins, std::size_t mid) {
       std::vector<Triangle> t;
-      const std::size_t g0 = g[r], k = k_of[r];
-      for(std::size_t e = 0; e < mid; ++e) t.push_back({ G(g0 + e), G(g0 + e + 1), F(r) });
-      t.push_back({ F(r), G(g0 + mid), F(r + 1) });
-      for(std::size_t e = mid; e < k; ++e) t.push_back({ G(g0 + e), G(g0 + e + 1), F(r + 1) });
+      const std::size_t k = k_of[r] + (ins ? 1 : 0);
+      for(std::size_t e = 0; e < mid; ++e) t.push_back({ node(r, ins, e), node(r, ins, e + 1), F(r) });
+      t.push_back({ F(r), node(r, ins, mid), F(r + 1) });
+      for(std::size_t e = mid; e < k; ++e) t.push_back({ node(r, ins, e), node(r, ins, e + 1), F(r + 1) });
       return t;
     };
+    auto last_edge_extra = [&](std::size_t r) { return extra[r].edge != none && extra[r].edge + 1 == k_of[r]; };
     auto pending = [&](std::size_t r, int state) {
       const std::size_t end = g[r] + k_of[r];
-      return state == 1 ? Triangle{ F(r), G(end), F(r + 1) } : Triangle{ G(end + M - 1), G(end), F(r + 1) };
+      if(state == 1) return Triangle{ F(r), G(end), F(r + 1) };
+      return Triangle{ state == 3 ? extra[r].id : G(end + M - 1), G(end), F(r + 1) };
     };
+    struct Step { std::size_t mid; int state; bool ins; };
     Strip_result result;
-    std::vector<std::size_t> best_mid;
+    std::vector<Step> best_steps;
     int best_start = 0;
-    for(int start = 0; start < 3; ++start) {
+    for(int start = 0; start < 4; ++start) {
       if(start == 2 && k_of[n - 1] == 0) continue;
-      std::vector<std::array<Cost, 3>> best(n + 1);
-      std::vector<std::array<std::pair<std::size_t, int>, 3>> back(n + 1);
+      if(start == 3 && !last_edge_extra(n - 1)) continue;
+      std::vector<std::array<Cost, 4>> best(n + 1);
+      std::vector<std::array<Step, 4>> back(n + 1);
       best[0][start] = Cost{ 0, 0 };
       for(std::size_t r = 0; r < n; ++r)
-        for(int s = 0; s < 3; ++s) {
+        for(int s = 0; s < 4; ++s) {
           if(best[r][s].worst == HUGE_VAL) continue;
           const Triangle in = s == 0 ? Triangle{} : pending(r == 0 ? n - 1 : r - 1, s);
-          for(std::size_t mid = 0; mid <= k_of[r]; ++mid) {
-            const auto t = triangles(r, mid);
-            Cost cst = best[r][s];
-            std::size_t pos = 0;
-            if(s != 0) { cst.add(cost(merge(in, t[0]))); pos = 1; }
-            for(; pos + 1 < t.size(); pos += 2) cst.add(cost(merge(t[pos], t[pos + 1])));
-            const int out = pos == t.size() ? 0 : (mid == k_of[r] ? 1 : 2);
-            if(cst < best[r + 1][out]) { best[r + 1][out] = cst; back[r + 1][out] = { mid, s }; }
+          for(bool ins : { false, true }) {
+            if(ins && extra[r].edge == none) continue;
+            const std::size_t k = k_of[r] + (ins ? 1 : 0);
+            for(std::size_t mid = 0; mid <= k; ++mid) {
+              const auto t = triangles(r, ins, mid);
+              Cost cst = best[r][s];
+              std::size_t pos = 0;
+              if(s != 0) { cst.add(cost(merge(in, t[0]))); pos = 1; }
+              for(; pos + 1 < t.size(); pos += 2) cst.add(cost(merge(t[pos], t[pos + 1])));
+              const int out = pos == t.size() ? 0 : mid == k ? 1 : (ins && last_edge_extra(r)) ? 3 : 2;
+              if(cst < best[r + 1][out]) { best[r + 1][out] = cst; back[r + 1][out] = Step{ mid, s, ins }; }
+            }
           }
         }
       if(best[n][start] < result.cost) {
         result.cost = best[n][start];
         best_start = start;
-        best_mid.assign(n, 0);
+        best_steps.assign(n, Step{});
         int s = start;
-        for(std::size_t r = n; r > 0; --r) { best_mid[r - 1] = back[r][s].first; s = back[r][s].second; }
+        for(std::size_t r = n; r > 0; --r) { best_steps[r - 1] = back[r][s]; s = back[r][s].state; }
       }
     }
     if(result.cost.worst == HUGE_VAL) return result;
+    result.inserted.assign(n, false);
     Triangle in = best_start == 0 ? Triangle{} : pending(n - 1, best_start);
     bool has_in = best_start != 0;
     for(std::size_t r = 0; r < n; ++r) {
-      const auto t = triangles(r, best_mid[r]);
+      result.inserted[r] = best_steps[r].ins;
+      const auto t = triangles(r, best_steps[r].ins, best_steps[r].mid);
       std::size_t pos = 0;
       if(has_in) { result.quads.push_back(merge(in, t[0])); pos = 1; }
       for(; pos + 1 < t.size(); pos += 2) result.quads.push_back(merge(t[pos], t[pos + 1]));
