@@ -542,8 +542,9 @@ std::vector<double> angles_at(const Mesh& m, const Point& corner)
 // within [45, 135]. Before the fan the strip gave such a corner two quads (170 degrees each at
 // the NACA 0012 trailing edge) and the 2-degree spike failed after 8 rounds. Until the
 // pairing could place extra chain nodes in any gap, the spikes of 2 and 30 degrees kept a
-// corner angle of 149 and 165 degrees. The 20-degree spike is the known limit (printed): its
-// F points run straight past the tip and three of them span too little of it (156 degrees).
+// corner angle of 149 and 165 degrees (and the 1-degree spike 137). The 20-degree spike is the
+// known limit (printed): it was within [45, 135] before, and now its F points run past the tip
+// and three of them span too little of it (156 degrees).
 TEST(Buffer_layers, corners_over_270_degrees_get_a_fan_within_45_135)
 {
   std::vector<std::pair<std::string, std::pair<Domain, Point>>> cases;
@@ -585,6 +586,19 @@ TEST(Buffer_layers, corners_over_270_degrees_get_a_fan_within_45_135)
 TEST(Buffer_layers, dumbbell_with_a_narrow_channel_meets_45_135)
 {
   expect_angles_45_135(mesh_and_check(polygons({ dumbbell() }, {}), "dumbbell"), "dumbbell");
+}
+
+// An ellipse 1 long and 0.03 wide (semi-axes), 200 points: a thin sliver whose strips are
+// long ladders. Before each gap of the strip could take an extra chain node, the pairing had
+// to shear them (363 angles out, as wide as [11.4, 180.0]).
+TEST(Buffer_layers, thin_elliptic_sliver_meets_45_135)
+{
+  std::vector<Point> p;
+  for(int i = 0; i < 200; ++i) {
+    const double t = 2 * pi * i / 200;
+    p.emplace_back(std::cos(t), 0.03 * std::sin(t));
+  }
+  expect_angles_45_135(mesh_and_check(polygons({ p }, {}), "sliver 1 x 0.03"), "sliver");
 }
 
 TEST(Buffer_layers, tiny_disc_far_from_the_origin_meets_45_135)
