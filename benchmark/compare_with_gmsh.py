@@ -3,7 +3,7 @@
 
 Usage:
     compare_with_gmsh.py QUAD_MESHER DATA_DIR OUT_DIR [CASE ...] [--timeout S] [--gmsh-size-factor F]
-                         [--with-bahamas]
+                         [--with-bahamas] [--gmsh-from PREVIOUS/comparison.json]
 
 DATA_DIR is the shared data folder (DATA_DIR/CASE/CASE.poly); the tools are taken from
 DATA_DIR/../bench.  Without CASE names every .poly there is run except the multi-region
@@ -19,7 +19,9 @@ per case: ours / Gmsh's best variant; H is the boundary's Hausdorff distance ove
 domain's diagonal).  Gmsh's best variant is the all-quad mesh with, in turn:
 every check but angles_45_135 passed ("valid"), the smallest worst angle (largest distance
 of an angle from 90 deg, to 0.01 deg), the fewest angles outside [45, 135] that no input
-corner forces ("unforced": not at an input corner below 45 or above 270 deg).  Times are wall
+corner forces ("unforced": not at an input corner below 45 or above 270 deg).  With --gmsh-from,
+Gmsh's runs of the cases found in an earlier comparison.json are taken from it (not rerun,
+not re-verified): only ours runs again, in a minute or two instead of about 25.  Times are wall
 clock of whole processes: our CLI (read, mesh, write) and Gmsh's worker (Python start,
 geometry, meshing, writing).  Needs Debian's python3-gmsh, numpy, scipy, shapely and meshio.
 """
@@ -125,9 +127,11 @@ def cell(R, what):
 def markdown(rows, meta):
     head = ["case", "quads", "vertices", "min angle", "max angle", "in [45°,135°]", "out (unforced)", "H", "valid",
             "wall time", "our depth", "Gmsh variant"]
-    L = ["%s; %s; Gmsh %s, variants %s, sizes %g x the shortest incident segment, timeout %g s per run. "
+    L = ["%s; %s; Gmsh %s, variants %s, sizes %g x the shortest incident segment, timeout %g s per run%s. "
          "Each cell: ours / Gmsh's best." % (meta["date"], meta["machine"], meta["gmsh_version"],
-                                              ", ".join(GMSH_VARIANTS), meta["gmsh_size_factor"], meta["timeout"]), "",
+                                              ", ".join(GMSH_VARIANTS), meta["gmsh_size_factor"], meta["timeout"],
+                                              "; Gmsh's runs from " + meta["gmsh_from"] if "gmsh_from" in meta else ""),
+         "",
         "| " + " | ".join(head) + " |", "| --- |" + " ---: |" * 7 + " --- | ---: | ---: | --- |"]
     for r in rows:
         o, g = r["ours"], r["gmsh"].get(r["gmsh_best"]) if r["gmsh_best"] else None
@@ -154,7 +158,15 @@ def main():
     ap.add_argument("--gmsh-size-factor", type=float, default=1.0,
                     help="peer_gmsh.py --size-factor: Gmsh's sizes times this (default 1)")
     ap.add_argument("--with-bahamas", action="store_true", help="also run %s" % SLOW)
+    ap.add_argument("--gmsh-from", metavar="JSON", help="an earlier comparison.json: reuse its Gmsh runs")
     a = ap.parse_args()
+    earlier = {}
+    if a.gmsh_from:
+        prev = json.load(open(a.gmsh_from))
+        for key in ("timeout", "gmsh_size_factor"):
+            if prev["meta"][key] != getattr(a, key):
+                ap.error("%s has %s %s, this run %s" % (a.gmsh_from, key, prev["meta"][key], getattr(a, key)))
+        earlier = {r["case"]: r["gmsh"] for r in prev["cases"]}
     data, bench = os.path.abspath(a.data), os.path.abspath(os.path.join(a.data, "..", "bench"))
     polys = {os.path.basename(p)[:-5]: p for p in glob.glob(os.path.join(data, "*", "*.poly"))}
     cases = a.cases or sorted(c for c in polys if c not in MULTI_REGION and (c != SLOW or a.with_bahamas))
@@ -169,7 +181,8 @@ def main():
         print(case, "...", file=sys.stderr, flush=True)
         r = {"case": case, "poly": polys[case], "ours": run_ours(os.path.abspath(a.mesher), bench, polys[case],
                                                                  cdir, a.timeout),
-             "gmsh": run_gmsh(bench, polys[case], cdir, a.timeout, a.gmsh_size_factor)}
+             "gmsh": earlier[case] if case in earlier else run_gmsh(bench, polys[case], cdir, a.timeout,
+                                                                    a.gmsh_size_factor)}
         r["gmsh_best"] = best_gmsh(r["gmsh"])
         rows.append(r)
     cpu = [l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo") if l.startswith("model name")]
@@ -179,6 +192,8 @@ def main():
             "gmsh_version": next((R["gmsh_version"] for r in rows for R in r["gmsh"].values()
                                   if R["gmsh_version"]), "?"),
             "command": " ".join(sys.argv)}
+    if a.gmsh_from:
+        meta["gmsh_from"] = "%s (of %s)" % (a.gmsh_from, prev["meta"]["date"])
     with open(os.path.join(a.out, "comparison.json"), "w") as f:
         json.dump({"meta": meta, "cases": rows}, f, indent=1)
     md = markdown(rows, meta)

@@ -217,7 +217,7 @@ public:
       layers.build_second_layer();
     ok = ok && layers.report().failure.empty();
     if(ok && last >= Stage::BUFFER2)
-      layers.optimize();
+      layers.optimize(m_point_vertices);
     if(ok)
       layers.check_quads();
     const std::vector<std::size_t> index = layers.remove_unused_points();

@@ -608,8 +608,10 @@ public:
   /// Local min-max angle optimisation of the buffer: the first buffer points move freely, the
   /// new boundary points slide along their input edge, the core's boundary vertices move too;
   /// a move is kept only if it lowers the largest deviation from 90° of the quads around the
-  /// vertex and keeps them convex and unfolded. Input vertices never move.
-  void optimize(int passes = 12)
+  /// vertex and keeps them convex and unfolded. Then, around each quad still outside
+  /// [45°, 135°], the core vertices within two quads of it may move too. Input vertices and
+  /// `fixed_points` (a domain's isolated points) never move.
+  void optimize(const std::vector<std::size_t>& fixed_points, int passes = 12)
   {
     std::vector<std::vector<std::size_t>> quads_at(m_mesh.points.size());
     for(std::size_t q = 0; q < m_mesh.quads.size(); ++q)
@@ -655,9 +657,10 @@ public:
     // a vertex whose quads have not changed since it was last tried would not move: only
     // vertices sharing a quad with a moved one are tried again (same result, far fewer tries)
     std::vector<char> dirty(m_mesh.points.size(), 1), dirty_next(m_mesh.points.size(), 0);
+    auto run_passes = [&](const std::vector<std::size_t>& vertices) {
     for(int pass = 0; pass < passes; ++pass) {
       bool improved = false;
-      for(std::size_t v : movable) {
+      for(std::size_t v : vertices) {
         if(!dirty[v]) continue;
         const Local current = local_cost(v);
         if(current.worst <= 30.0) continue; // within [60, 120]: good enough
@@ -735,6 +738,38 @@ public:
       if(!improved) break;
       dirty.swap(dirty_next);
       std::fill(dirty_next.begin(), dirty_next.end(), 0);
+    }
+    };
+    run_passes(movable);
+    // A quad still outside [45, 135] (often just: a core quad beside a moved notch) may be
+    // mended by moving the core vertices within two quads of it too: the core keeps its
+    // connectivity, and no move may put one of its angles out of range.
+    std::vector<std::size_t> near_bad;
+    {
+      std::vector<char> seen(m_mesh.points.size(), 0);
+      for(std::size_t v : fixed_points) if(v < seen.size()) seen[v] = 1;
+      for(const Quad& q : m_mesh.quads) {
+        const double b = cost(q);
+        if(b <= 45.0 + 1e-9 || b >= 1000.0) continue;
+        for(std::size_t u : q)
+          for(std::size_t q1 : quads_at[u])
+            for(std::size_t w : m_mesh.quads[q1])
+              for(std::size_t q2 : quads_at[w])
+                for(std::size_t x : m_mesh.quads[q2])
+                  if(x < m_core_points && !on_cycle(x) && !is_input_vertex(x) && !seen[x]) {
+                    seen[x] = 1;
+                    near_bad.push_back(x);
+                  }
+      }
+    }
+    if(!near_bad.empty()) {
+      std::sort(near_bad.begin(), near_bad.end());
+      std::vector<std::size_t> all = near_bad;
+      all.insert(all.end(), movable.begin(), movable.end());
+      std::fill(dirty.begin(), dirty.end(), 1);
+      std::fill(dirty_next.begin(), dirty_next.end(), 0);
+      run_passes(all);
+      movable = std::move(all);
     }
     // positions back into the kernel: boundary points exactly on their edge
     for(std::size_t v : movable) {
