@@ -542,22 +542,15 @@ public:
   /// refinement requests at both.
   void check_quads()
   {
-    auto orient = m_traits.orientation_2_object();
     for(std::size_t q = 0; q < m_mesh.quads.size(); ++q) {
       const Quad& Q = m_mesh.quads[q];
       // only quads the buffer stages made or changed (a vertex new or on the core boundary)
       bool touched = false;
-      for(std::size_t v : Q) touched = touched || v >= m_core_points || on_cycle(v);
+      for(std::size_t v : Q) touched = touched || v >= m_core_points || on_cycle(v) || repaired(v);
       if(!touched) continue;
-      bool valid = true;
-      for(int c = 0; c < 4 && valid; ++c)
-        valid = orient(m_mesh.points[Q[c]], m_mesh.points[Q[(c + 1) % 4]], m_mesh.points[Q[(c + 2) % 4]])
-                == CGAL::LEFT_TURN;
+      const bool valid = is_valid_quad(Q);
       std::array<Point_2d, 4> P;
       for(int c = 0; c < 4; ++c) P[c] = m_xy[Q[c]];
-      // nearly flat corners count as invalid too: the quality check rejects them
-      for(int c = 0; c < 4 && valid; ++c)
-        valid = corner_scaled_jacobian(P[(c + 3) % 4], P[c], P[(c + 1) % 4]) > 1e-9;
       bool bad_angle = false;
       if(valid) {
         std::array<double, 4> a;
@@ -584,6 +577,20 @@ public:
           }
       }
     }
+  }
+
+  // strictly convex and counter-clockwise by the kernel's predicate, and no corner nearly flat
+  // (the quality check rejects those)
+  bool is_valid_quad(const Quad& Q) const
+  {
+    auto orient = m_traits.orientation_2_object();
+    for(int c = 0; c < 4; ++c)
+      if(orient(m_mesh.points[Q[c]], m_mesh.points[Q[(c + 1) % 4]], m_mesh.points[Q[(c + 2) % 4]]) != CGAL::LEFT_TURN)
+        return false;
+    for(int c = 0; c < 4; ++c)
+      if(!(corner_scaled_jacobian(m_xy[Q[(c + 3) % 4]], m_xy[Q[c]], m_xy[Q[(c + 1) % 4]]) > 1e-9))
+        return false;
+    return true;
   }
 
   /// Drops the points no quad uses (boundary nodes the pairing took out again); returns the
@@ -636,6 +643,7 @@ public:
         return worst < o.worst - 1e-9;
       }
     };
+    const double min_edge = 1e-8 * m_locator->diagonal();
     auto local_cost = [&](std::size_t v) {
       Local r;
       double angle_sum = 0;
@@ -648,6 +656,10 @@ public:
         int c = 0;
         while(Q[c] != v) ++c;
         angle_sum += corner_angle_degrees(m_xy[Q[(c + 3) % 4]], m_xy[v], m_xy[Q[(c + 1) % 4]]);
+        // an edge collapsing to a point keeps the angles fine but merges two vertices: the
+        // whole-mesh check rejects vertices within 1e-9 of the diagonal
+        for(int side : { 1, 3 })
+          if(length_2d(minus_2d(m_xy[Q[(c + side) % 4]], m_xy[v])) <= min_edge) ++r.invalid;
       }
       const double expected = m_slide.count(v) ? 180.0 : (is_core_boundary(v) ? -1 : 360.0);
       if(expected > 0 && std::abs(angle_sum - expected) > 1e-6)
@@ -764,14 +776,44 @@ public:
     }
     if(!near_bad.empty()) {
       std::sort(near_bad.begin(), near_bad.end());
+      std::vector<Point_2d> before(near_bad.size());
+      for(std::size_t k = 0; k < near_bad.size(); ++k) before[k] = m_xy[near_bad[k]];
       std::vector<std::size_t> all = near_bad;
       all.insert(all.end(), movable.begin(), movable.end());
       std::fill(dirty.begin(), dirty.end(), 1);
       std::fill(dirty_next.begin(), dirty_next.end(), 0);
       run_passes(all);
-      movable = std::move(all);
+      m_repaired.assign(m_mesh.points.size(), 0);
+      for(std::size_t k = 0; k < near_bad.size(); ++k) {
+        const std::size_t v = near_bad[k];
+        if(m_xy[v].x == before[k].x && m_xy[v].y == before[k].y) continue;
+        m_repaired[v] = 1; // check_quads() looks at its quads too
+        m_mesh.points[v] = m_traits.construct_point_2_object()(FT(m_xy[v].x), FT(m_xy[v].y));
+      }
+      write_back(movable);
+      // the kernel's predicates have the last word: a core quad the moves left nearly flat or
+      // not strictly convex undoes them all
+      bool valid = true;
+      for(std::size_t v : near_bad)
+        if(m_repaired[v])
+          for(std::size_t q : quads_at[v]) valid = valid && is_valid_quad(m_mesh.quads[q]);
+      if(valid) return;
+      for(std::size_t k = 0; k < near_bad.size(); ++k) {
+        const std::size_t v = near_bad[k];
+        if(!m_repaired[v]) continue;
+        m_repaired[v] = 0;
+        m_xy[v] = before[k];
+        m_mesh.points[v] = m_traits.construct_point_2_object()(FT(before[k].x), FT(before[k].y));
+      }
+      return;
     }
-    // positions back into the kernel: boundary points exactly on their edge
+    write_back(movable);
+  }
+
+private:
+  // the optimised positions back into the kernel: boundary points exactly on their edge
+  void write_back(const std::vector<std::size_t>& movable)
+  {
     for(std::size_t v : movable) {
       auto it = m_slide.find(v);
       if(it == m_slide.end()) {
@@ -789,7 +831,6 @@ public:
     }
   }
 
-private:
   static constexpr std::size_t none = std::size_t(-1);
 
   // for a sliding boundary point, moves `p` onto its edge strictly between its neighbours;
@@ -818,6 +859,9 @@ private:
   }
 
   bool on_cycle(std::size_t v) const { return v < m_on_cycle.size() && m_on_cycle[v] != 0; }
+
+  // a core vertex the repair moves of optimize() moved
+  bool repaired(std::size_t v) const { return v < m_repaired.size() && m_repaired[v] != 0; }
 
   bool is_core_boundary(std::size_t v) const
   {
@@ -1600,6 +1644,7 @@ private:
   std::vector<double> m_corner_angle; // per mesh point: its input corner's angle, or NaN
   std::unordered_map<std::size_t, Slide> m_slide;
   std::vector<char> m_on_cycle; // per core point
+  std::vector<char> m_repaired; // per point
   struct Quad_hash
   {
     std::size_t operator()(const Quad& q) const
