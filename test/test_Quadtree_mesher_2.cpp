@@ -69,6 +69,36 @@ TEST(Quadtree_mesher_2, max_size_bounds_every_cell)
   EXPECT_GT(mesh.quads.size(), 300u);
 }
 
+// A domain's mesh lies within the bounding box of its points: the size bound applies to the
+// cells meeting that box and not beyond, where the power-of-two root square may be four times
+// its area (a unit disc has a root square of side 4: 16384 cells of side 1/32 in all).
+TEST(Quadtree_mesher_2, max_size_bounds_the_cells_meeting_a_domains_box_only)
+{
+  Domain d;
+  for(int i = 0; i < 64; ++i) {
+    const double t = 2 * 3.14159265358979323846 * i / 64;
+    d.points.emplace_back(std::cos(t), std::sin(t));
+    d.segments.push_back({ std::size_t(i), std::size_t((i + 1) % 64) });
+  }
+  const double max_size = 1.0 / 32;
+  Mesher mesher(d, Criteria(max_size));
+  const auto mesh = mesher.run(QM::Stage::QUADTREE);
+  const auto& tree = mesher.quadtree();
+  std::size_t in_box = 0;
+  tree.for_each_leaf([&](const QM::Cell_key& k) {
+    const double x0 = tree.lattice_x(k.level, std::int64_t(k.i)), x1 = tree.lattice_x(k.level, std::int64_t(k.i) + 1);
+    const double y0 = tree.lattice_y(k.level, std::int64_t(k.j)), y1 = tree.lattice_y(k.level, std::int64_t(k.j) + 1);
+    if(x1 < -1 || x0 > 1 || y1 < -1 || y0 > 1) return;
+    ++in_box;
+    EXPECT_LE(tree.cell_side(k.level), max_size);
+  });
+  const double full = (tree.root_cells_x() * tree.root_side() / max_size) * (tree.root_cells_y() * tree.root_side() / max_size);
+  EXPECT_GE(double(in_box), 4 / (max_size * max_size));
+  EXPECT_LT(double(tree.number_of_leaves()), 0.5 * full) << "cells outside the box were refined to the bound";
+  EXPECT_TRUE(tree.is_strongly_balanced());
+  EXPECT_GT(mesh.quads.size(), 4000u);
+}
+
 TEST(Quadtree_mesher_2, min_size_caps_refinement_instead_of_failing)
 {
   Domain d;

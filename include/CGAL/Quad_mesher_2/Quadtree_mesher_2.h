@@ -458,6 +458,9 @@ private:
     for(std::size_t i = 0; i < n; ++i)
       m_xy[i] = { CGAL::to_double(m_traits.compute_x_2_object()(m_points[i])),
                   CGAL::to_double(m_traits.compute_y_2_object()(m_points[i])) };
+    m_box = { HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
+    for(const auto& p : m_xy)
+      m_box = { (std::min)(m_box[0], p[0]), (std::min)(m_box[1], p[1]), (std::max)(m_box[2], p[0]), (std::max)(m_box[3], p[1]) };
     internal::Nearest_neighbor_distances nn(m_xy);
     m_spacing = std::move(nn.distance);
     m_nearest = std::move(nn.neighbor);
@@ -511,7 +514,20 @@ private:
           << ", beyond " << m_tree->depth_limit();
       throw Meshing_error(msg.str());
     }
-    m_tree->refine([&](const Cell_key& k) { return k.level < level; });
+    m_tree->refine([&](const Cell_key& k) { return k.level < level && !outside_domain_box(k); });
+  }
+
+  // A domain's mesh lies within the bounding box of its points: cells wholly outside it are
+  // cleared anyway, so the size bounds are not applied there (the power-of-two root square
+  // can be four times the box's area; balance still grades them). A point cloud's mesh is the
+  // whole root square.
+  bool outside_domain_box(const Cell_key& k) const
+  {
+    if(m_domain.is_point_cloud() || m_xy.empty())
+      return false;
+    const double x0 = m_tree->lattice_x(k.level, std::int64_t(k.i)), x1 = m_tree->lattice_x(k.level, std::int64_t(k.i) + 1);
+    const double y0 = m_tree->lattice_y(k.level, std::int64_t(k.j)), y1 = m_tree->lattice_y(k.level, std::int64_t(k.j) + 1);
+    return x1 < m_box[0] || x0 > m_box[2] || y1 < m_box[1] || y0 > m_box[3];
   }
 
   // Paper §4.2: the cell holding input point i is no larger than s_i = min_j d_ij.
@@ -613,6 +629,8 @@ private:
     const int cap = min_size_level();
     const bool capped = m_criteria.min_size() > 0;
     m_tree->refine([&](const Cell_key& k) {
+      if(outside_domain_box(k))
+        return false;
       double side = m_tree->cell_side(k.level);
       double target = CGAL::to_double(field(m_tree->cell_center(k)));
       for(int c = 0; c < 4; ++c)
@@ -634,6 +652,7 @@ private:
   std::vector<Point_2> m_points;                // input points, duplicates merged
   std::vector<std::size_t> m_input_index;       // of each in m_domain.points
   std::vector<std::array<double, 2>> m_xy;      // their coordinates, for sizing only
+  std::array<double, 4> m_box{ { 0, 0, 0, 0 } }; // their bounding box: xmin, ymin, xmax, ymax
   std::vector<double> m_spacing;                // s_i = min_j d_ij
   std::vector<std::size_t> m_nearest;           // the j of s_i
   std::unique_ptr<Quadtree> m_tree;

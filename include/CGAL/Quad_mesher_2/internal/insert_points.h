@@ -177,6 +177,8 @@ std::vector<std::size_t> move_anchors(const Tree& tree, Quad_mesh_2<typename Tre
   auto x_of = traits.compute_x_2_object();
   auto y_of = traits.compute_y_2_object();
   auto make_point = traits.construct_point_2_object();
+  if(anchors.empty()) // a domain without isolated points: no index of every vertex to build
+    return {};
   Key_map index(vertex_keys.size());
   for(std::size_t v = 0; v < vertex_keys.size(); ++v)
     index.insert(vertex_keys[v], std::uint32_t(v));
