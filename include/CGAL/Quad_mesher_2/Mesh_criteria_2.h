@@ -24,6 +24,8 @@ namespace Quad_mesher_2 {
 ///   (if `use_point_spacing()`), or
 /// - larger than the user's sizing field at its centre or one of its corners (if set);
 ///
+/// for a domain bounded by segments, the first and the last only in cells meeting the
+/// bounding box of its points (beyond it every cell is cleared away, see `Stage::CLEARANCE`);
 /// but never below `min_size()` (if set) nor deeper than `max_depth()`. A sizing that asks
 /// for cells deeper than `max_depth()` without a `min_size()` to stop it is an error
 /// (`Meshing_error`), not a silently coarser mesh. `max_size()` wins over `min_size()` where
