@@ -286,7 +286,12 @@ int main(int argc, char** argv)
                  "about 250 bytes each)")
     ->check(CLI::PositiveNumber);
   app.add_flag("-v,--verbose", opt.verbose, "print what each stage did and its time");
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch(const CLI::ParseError& e) {
+    // CLI11 prints the message; its own codes (105, 106, ...) become the documented 2
+    return app.exit(e) == 0 ? 0 : 2;
+  }
 
   // Never write over the input, and never write one file twice.
   std::vector<std::string> targets = opt.outputs;
