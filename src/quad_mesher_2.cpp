@@ -272,7 +272,9 @@ int main(int argc, char** argv)
                  "with --curves spline: largest distance between a segment and its curve (0: 1e-3 "
                  "of the bounding-box diagonal)")
     ->check(CLI::NonNegativeNumber);
-  app.add_option("--max-size", opt.max_size, "largest cell side (0: no bound); for a domain, of the cells meeting the bounding box of its points")
+  app.add_option("--max-size", opt.max_size,
+                 "largest cell side (0: no bound); for a domain, of the cells meeting the bounding "
+                 "box of its points")
     ->check(CLI::NonNegativeNumber);
   app.add_option("--min-size", opt.min_size,
                  "smallest cell side (0: no bound); with --stop-after quadtree input points "

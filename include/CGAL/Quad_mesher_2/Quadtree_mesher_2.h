@@ -19,6 +19,8 @@
 #include <CGAL/Quad_mesher_2/internal/insert_points.h>
 #include <CGAL/Quad_mesher_2/internal/nearest_neighbor_distances.h>
 
+#include <CGAL/Bbox_2.h>
+
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -97,7 +99,12 @@ public:
     merge_duplicate_points();
     if(!m_domain.is_point_cloud())
       m_loops = extract_loops(m_domain, m_traits); // validates the boundary first
-    m_tree = std::make_unique<Quadtree>(bounding_box(), m_criteria.max_depth(), m_traits);
+    const auto box = points_box();
+    m_box = CGAL::Bbox_2(CGAL::to_double(m_traits.compute_xmin_2_object()(box)),
+                         CGAL::to_double(m_traits.compute_ymin_2_object()(box)),
+                         CGAL::to_double(m_traits.compute_xmax_2_object()(box)),
+                         CGAL::to_double(m_traits.compute_ymax_2_object()(box)));
+    m_tree = std::make_unique<Quadtree>(bounding_box(box), m_criteria.max_depth(), m_traits);
     m_tree->set_max_leaves(m_criteria.max_cells());
     compute_point_spacing();
     refine_to_max_size();
@@ -427,21 +434,24 @@ private:
       }
   }
 
-  typename GeomTraits::Iso_rectangle_2 bounding_box() const
+  // the bounding box of the input points
+  typename GeomTraits::Iso_rectangle_2 points_box() const
   {
     auto less_x = m_traits.less_x_2_object();
     auto less_y = m_traits.less_y_2_object();
     auto xs = std::minmax_element(m_points.begin(), m_points.end(), less_x);
     auto ys = std::minmax_element(m_points.begin(), m_points.end(), less_y);
-    auto box = m_traits.construct_iso_rectangle_2_object()(*xs.first, *xs.second, *ys.first,
-                                                           *ys.second);
+    return m_traits.construct_iso_rectangle_2_object()(*xs.first, *xs.second, *ys.first, *ys.second);
+  }
+
+  // the root grid's box: `box`, the points' (whose doubles are `m_box`), with room around it
+  // when the points must become vertices
+  typename GeomTraits::Iso_rectangle_2 bounding_box(const typename GeomTraits::Iso_rectangle_2& box) const
+  {
     if(!m_criteria.points_as_vertices())
       return box;
     // Room around the extreme points for the refined blocks that make them vertices.
-    const double xmin = CGAL::to_double(m_traits.compute_xmin_2_object()(box));
-    const double xmax = CGAL::to_double(m_traits.compute_xmax_2_object()(box));
-    const double ymin = CGAL::to_double(m_traits.compute_ymin_2_object()(box));
-    const double ymax = CGAL::to_double(m_traits.compute_ymax_2_object()(box));
+    const double xmin = m_box.xmin(), xmax = m_box.xmax(), ymin = m_box.ymin(), ymax = m_box.ymax();
     double margin = (std::max)(xmax - xmin, ymax - ymin) / 8;
     if(!(margin > 0))
       margin = (std::max)((std::max)(std::abs(xmin), std::abs(ymin)) * 0x1p-20, 0x1p-20);
@@ -458,9 +468,6 @@ private:
     for(std::size_t i = 0; i < n; ++i)
       m_xy[i] = { CGAL::to_double(m_traits.compute_x_2_object()(m_points[i])),
                   CGAL::to_double(m_traits.compute_y_2_object()(m_points[i])) };
-    m_box = { HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
-    for(const auto& p : m_xy)
-      m_box = { (std::min)(m_box[0], p[0]), (std::min)(m_box[1], p[1]), (std::max)(m_box[2], p[0]), (std::max)(m_box[3], p[1]) };
     internal::Nearest_neighbor_distances nn(m_xy);
     m_spacing = std::move(nn.distance);
     m_nearest = std::move(nn.neighbor);
@@ -523,11 +530,11 @@ private:
   // whole root square.
   bool outside_domain_box(const Cell_key& k) const
   {
-    if(m_domain.is_point_cloud() || m_xy.empty())
+    if(m_domain.is_point_cloud())
       return false;
-    const double x0 = m_tree->lattice_x(k.level, std::int64_t(k.i)), x1 = m_tree->lattice_x(k.level, std::int64_t(k.i) + 1);
-    const double y0 = m_tree->lattice_y(k.level, std::int64_t(k.j)), y1 = m_tree->lattice_y(k.level, std::int64_t(k.j) + 1);
-    return x1 < m_box[0] || x0 > m_box[2] || y1 < m_box[1] || y0 > m_box[3];
+    const std::int64_t i = std::int64_t(k.i), j = std::int64_t(k.j);
+    return m_tree->lattice_x(k.level, i + 1) < m_box.xmin() || m_tree->lattice_x(k.level, i) > m_box.xmax()
+           || m_tree->lattice_y(k.level, j + 1) < m_box.ymin() || m_tree->lattice_y(k.level, j) > m_box.ymax();
   }
 
   // Paper §4.2: the cell holding input point i is no larger than s_i = min_j d_ij.
@@ -652,7 +659,7 @@ private:
   std::vector<Point_2> m_points;                // input points, duplicates merged
   std::vector<std::size_t> m_input_index;       // of each in m_domain.points
   std::vector<std::array<double, 2>> m_xy;      // their coordinates, for sizing only
-  std::array<double, 4> m_box{ { 0, 0, 0, 0 } }; // their bounding box: xmin, ymin, xmax, ymax
+  CGAL::Bbox_2 m_box;                           // their bounding box
   std::vector<double> m_spacing;                // s_i = min_j d_ij
   std::vector<std::size_t> m_nearest;           // the j of s_i
   std::unique_ptr<Quadtree> m_tree;

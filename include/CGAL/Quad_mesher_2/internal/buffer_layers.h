@@ -544,10 +544,7 @@ public:
   {
     for(std::size_t q = 0; q < m_mesh.quads.size(); ++q) {
       const Quad& Q = m_mesh.quads[q];
-      // only quads the buffer stages made or changed (a vertex new or on the core boundary)
-      bool touched = false;
-      for(std::size_t v : Q) touched = touched || v >= m_core_points || on_cycle(v) || repaired(v);
-      if(!touched) continue;
+      if(!made_or_changed(Q)) continue;
       const bool valid = is_valid_quad(Q);
       std::array<Point_2d, 4> P;
       for(int c = 0; c < 4; ++c) P[c] = m_xy[Q[c]];
@@ -670,147 +667,156 @@ public:
     // vertices sharing a quad with a moved one are tried again (same result, far fewer tries)
     std::vector<char> dirty(m_mesh.points.size(), 1), dirty_next(m_mesh.points.size(), 0);
     auto run_passes = [&](const std::vector<std::size_t>& vertices) {
-    for(int pass = 0; pass < passes; ++pass) {
-      bool improved = false;
-      for(std::size_t v : vertices) {
-        if(!dirty[v]) continue;
-        const Local current = local_cost(v);
-        if(current.worst <= 30.0) continue; // within [60, 120]: good enough
-        const Point_2d old = m_xy[v];
-        std::vector<Point_2d> targets;
-        Point_2d lap{0, 0};
-        int nl = 0;
-        for(std::size_t q : quads_at[v]) {
-          const Quad& Q = m_mesh.quads[q];
-          int c = 0;
-          while(Q[c] != v) ++c;
-          const Point_2d& prev = m_xy[Q[(c + 3) % 4]];
-          const Point_2d& next = m_xy[Q[(c + 1) % 4]];
-          const Point_2d& opp = m_xy[Q[(c + 2) % 4]];
-          targets.push_back(Point_2d{prev.x + next.x - opp.x, prev.y + next.y - opp.y});
-          lap.x += prev.x + next.x; lap.y += prev.y + next.y; nl += 2;
-        }
-        lap.x /= nl; lap.y /= nl;
-        targets.push_back(lap);
-        // Beside an input corner, v turns about it to share the corner's angle evenly between
-        // the two quads it separates there (the paper's rotated bisectors, §5).
-        for(std::size_t q : quads_at[v]) {
-          const Quad& Q = m_mesh.quads[q];
-          int c = 0;
-          while(Q[c] != v) ++c;
-          for(int side : { 1, 3 }) {
-            const std::size_t corner = Q[(c + side) % 4];
-            if(!is_input_vertex(corner)) continue;
-            const Point_2d& P = m_xy[corner];
-            const Point_2d& w = m_xy[Q[(c + 2 * side) % 4]]; // the corner's other neighbour in q
-            double other = -1; // the corner's angle in the other quad at v
-            for(std::size_t q2 : quads_at[v]) {
-              if(q2 == q) continue;
-              const Quad& R = m_mesh.quads[q2];
-              for(int j = 0; j < 4; ++j)
-                if(R[j] == corner && (R[(j + 1) % 4] == v || R[(j + 3) % 4] == v))
-                  other = corner_angle_degrees(m_xy[R[(j + 3) % 4]], P, m_xy[R[(j + 1) % 4]]);
+      for(int pass = 0; pass < passes; ++pass) {
+        bool improved = false;
+        for(std::size_t v : vertices) {
+          if(!dirty[v]) continue;
+          const Local current = local_cost(v);
+          if(current.worst <= 30.0) continue; // within [60, 120]: good enough
+          const Point_2d old = m_xy[v];
+          std::vector<Point_2d> targets;
+          Point_2d lap{0, 0};
+          int nl = 0;
+          for(std::size_t q : quads_at[v]) {
+            const Quad& Q = m_mesh.quads[q];
+            int c = 0;
+            while(Q[c] != v) ++c;
+            const Point_2d& prev = m_xy[Q[(c + 3) % 4]];
+            const Point_2d& next = m_xy[Q[(c + 1) % 4]];
+            const Point_2d& opp = m_xy[Q[(c + 2) % 4]];
+            targets.push_back(Point_2d{prev.x + next.x - opp.x, prev.y + next.y - opp.y});
+            lap.x += prev.x + next.x; lap.y += prev.y + next.y; nl += 2;
+          }
+          lap.x /= nl; lap.y /= nl;
+          targets.push_back(lap);
+          add_turns_about_corners(v, quads_at, targets);
+          Point_2d mean{0, 0};
+          for(std::size_t k = 0; k + 1 < targets.size(); ++k) { mean.x += targets[k].x; mean.y += targets[k].y; }
+          mean.x /= double(targets.size() - 1); mean.y /= double(targets.size() - 1);
+          targets.push_back(mean);
+          Local best = current;
+          Point_2d best_p = old;
+          for(const Point_2d& t : targets)
+            for(double step : { 1.0, 0.5, 0.25, 0.1 }) {
+              Point_2d p{old.x + step * (t.x - old.x), old.y + step * (t.y - old.y)};
+              if(!slide_to(v, p)) continue;
+              m_xy[v] = p;
+              const Local c = local_cost(v);
+              m_xy[v] = old;
+              if(c < best) {
+                best = c;
+                best_p = p;
+              }
             }
-            const double here = corner_angle_degrees(w, P, old);
-            if(other < 0 || here <= 135.0) continue;
-            // turn v towards w by half the difference
-            const double turn = (here - other) / 2 * 3.14159265358979323846 / 180;
-            const Point_2d d = minus_2d(old, P), e = minus_2d(w, P);
-            const double sense = d.x * e.y - d.y * e.x > 0 ? 1.0 : -1.0;
-            const double cs = std::cos(sense * turn), sn = std::sin(sense * turn);
-            targets.push_back(Point_2d{ P.x + cs * d.x - sn * d.y, P.y + sn * d.x + cs * d.y });
+          if(best_p.x != old.x || best_p.y != old.y) {
+            m_xy[v] = best_p;
+            improved = true;
+            for(std::size_t q : quads_at[v])
+              for(std::size_t w : m_mesh.quads[q])
+                dirty[w] = dirty_next[w] = 1;
           }
         }
-        Point_2d mean{0, 0};
-        for(std::size_t k = 0; k + 1 < targets.size(); ++k) { mean.x += targets[k].x; mean.y += targets[k].y; }
-        mean.x /= double(targets.size() - 1); mean.y /= double(targets.size() - 1);
-        targets.push_back(mean);
-        Local best = current;
-        Point_2d best_p = old;
-        for(const Point_2d& t : targets)
-          for(double step : { 1.0, 0.5, 0.25, 0.1 }) {
-            Point_2d p{old.x + step * (t.x - old.x), old.y + step * (t.y - old.y)};
-            if(!slide_to(v, p)) continue;
-            m_xy[v] = p;
-            const Local c = local_cost(v);
-            m_xy[v] = old;
-            if(c < best) {
-              best = c;
-              best_p = p;
-            }
-          }
-        if(best_p.x != old.x || best_p.y != old.y) {
-          m_xy[v] = best_p;
-          improved = true;
-          for(std::size_t q : quads_at[v])
-            for(std::size_t w : m_mesh.quads[q])
-              dirty[w] = dirty_next[w] = 1;
-        }
+        if(!improved) break;
+        dirty.swap(dirty_next);
+        std::fill(dirty_next.begin(), dirty_next.end(), 0);
       }
-      if(!improved) break;
-      dirty.swap(dirty_next);
-      std::fill(dirty_next.begin(), dirty_next.end(), 0);
-    }
     };
     run_passes(movable);
     // A quad still outside [45, 135] (often just: a core quad beside a moved notch) may be
     // mended by moving the core vertices within two quads of it too: the core keeps its
     // connectivity, and no move may put one of its angles out of range.
+    auto ring = [&](const std::vector<std::size_t>& from) { // the vertices of their quads
+      std::vector<std::size_t> out;
+      for(std::size_t u : from)
+        for(std::size_t q : quads_at[u])
+          out.insert(out.end(), m_mesh.quads[q].begin(), m_mesh.quads[q].end());
+      std::sort(out.begin(), out.end());
+      out.erase(std::unique(out.begin(), out.end()), out.end());
+      return out;
+    };
     std::vector<std::size_t> near_bad;
-    {
-      std::vector<char> seen(m_mesh.points.size(), 0);
-      for(std::size_t v : fixed_points) if(v < seen.size()) seen[v] = 1;
-      for(const Quad& q : m_mesh.quads) {
-        const double b = cost(q);
-        if(b <= 45.0 + 1e-9 || b >= 1000.0) continue;
-        for(std::size_t u : q)
-          for(std::size_t q1 : quads_at[u])
-            for(std::size_t w : m_mesh.quads[q1])
-              for(std::size_t q2 : quads_at[w])
-                for(std::size_t x : m_mesh.quads[q2])
-                  if(x < m_core_points && !on_cycle(x) && !is_input_vertex(x) && !seen[x]) {
-                    seen[x] = 1;
-                    near_bad.push_back(x);
-                  }
-      }
+    for(const Quad& q : m_mesh.quads) {
+      const double b = made_or_changed(q) ? cost(q) : 0.0;
+      if(b > 45.0 + 1e-9 && b < 1000.0) near_bad.insert(near_bad.end(), q.begin(), q.end());
     }
+    near_bad = ring(ring(near_bad));
+    std::vector<char> fixed(m_mesh.points.size(), 0);
+    for(std::size_t v : fixed_points) if(v < fixed.size()) fixed[v] = 1;
+    near_bad.erase(std::remove_if(near_bad.begin(), near_bad.end(), [&](std::size_t x) {
+                     return x >= m_core_points || on_cycle(x) || is_input_vertex(x) || fixed[x];
+                   }), near_bad.end());
+    std::vector<Point_2d> before(near_bad.size());
+    for(std::size_t k = 0; k < near_bad.size(); ++k) before[k] = m_xy[near_bad[k]];
     if(!near_bad.empty()) {
-      std::sort(near_bad.begin(), near_bad.end());
-      std::vector<Point_2d> before(near_bad.size());
-      for(std::size_t k = 0; k < near_bad.size(); ++k) before[k] = m_xy[near_bad[k]];
       std::vector<std::size_t> all = near_bad;
       all.insert(all.end(), movable.begin(), movable.end());
       std::fill(dirty.begin(), dirty.end(), 1);
       std::fill(dirty_next.begin(), dirty_next.end(), 0);
       run_passes(all);
-      m_repaired.assign(m_mesh.points.size(), 0);
-      for(std::size_t k = 0; k < near_bad.size(); ++k) {
-        const std::size_t v = near_bad[k];
-        if(m_xy[v].x == before[k].x && m_xy[v].y == before[k].y) continue;
-        m_repaired[v] = 1; // check_quads() looks at its quads too
-        m_mesh.points[v] = m_traits.construct_point_2_object()(FT(m_xy[v].x), FT(m_xy[v].y));
-      }
-      write_back(movable);
-      // the kernel's predicates have the last word: a core quad the moves left nearly flat or
-      // not strictly convex undoes them all
-      bool valid = true;
-      for(std::size_t v : near_bad)
-        if(m_repaired[v])
-          for(std::size_t q : quads_at[v]) valid = valid && is_valid_quad(m_mesh.quads[q]);
-      if(valid) return;
-      for(std::size_t k = 0; k < near_bad.size(); ++k) {
-        const std::size_t v = near_bad[k];
-        if(!m_repaired[v]) continue;
-        m_repaired[v] = 0;
-        m_xy[v] = before[k];
-        m_mesh.points[v] = m_traits.construct_point_2_object()(FT(before[k].x), FT(before[k].y));
-      }
-      return;
     }
     write_back(movable);
+    std::vector<std::size_t> moved;
+    std::vector<Point_2d> moved_from;
+    std::vector<Point_2> exact_before; // for undoing: the core's points are not all doubles
+    for(std::size_t k = 0; k < near_bad.size(); ++k)
+      if(m_xy[near_bad[k]].x != before[k].x || m_xy[near_bad[k]].y != before[k].y) {
+        moved.push_back(near_bad[k]);
+        moved_from.push_back(before[k]);
+        exact_before.push_back(m_mesh.points[near_bad[k]]);
+      }
+    write_back(moved);
+    // the kernel's predicates have the last word: a core quad the repair moves left nearly flat
+    // or not strictly convex undoes them all
+    bool valid = true;
+    for(std::size_t v : moved)
+      for(std::size_t q : quads_at[v]) valid = valid && is_valid_quad(m_mesh.quads[q]);
+    m_repaired.assign(m_mesh.points.size(), 0);
+    for(std::size_t k = 0; k < moved.size(); ++k) {
+      if(valid) {
+        m_repaired[moved[k]] = 1; // check_quads() looks at its quads too
+      } else {
+        m_xy[moved[k]] = moved_from[k];
+        m_mesh.points[moved[k]] = exact_before[k];
+      }
+    }
   }
 
 private:
+  // Beside an input corner, v turns about it to share the corner's angle evenly between the
+  // two quads it separates there (the paper's rotated bisectors, §5): one target per corner.
+  void add_turns_about_corners(std::size_t v, const std::vector<std::vector<std::size_t>>& quads_at,
+                               std::vector<Point_2d>& targets) const
+  {
+    const Point_2d old = m_xy[v];
+    for(std::size_t q : quads_at[v]) {
+      const Quad& Q = m_mesh.quads[q];
+      int c = 0;
+      while(Q[c] != v) ++c;
+      for(int side : { 1, 3 }) {
+        const std::size_t corner = Q[(c + side) % 4];
+        if(!is_input_vertex(corner)) continue;
+        const Point_2d& P = m_xy[corner];
+        const Point_2d& w = m_xy[Q[(c + 2 * side) % 4]]; // the corner's other neighbour in q
+        double other = -1; // the corner's angle in the other quad at v
+        for(std::size_t q2 : quads_at[v]) {
+          if(q2 == q) continue;
+          const Quad& R = m_mesh.quads[q2];
+          for(int j = 0; j < 4; ++j)
+            if(R[j] == corner && (R[(j + 1) % 4] == v || R[(j + 3) % 4] == v))
+              other = corner_angle_degrees(m_xy[R[(j + 3) % 4]], P, m_xy[R[(j + 1) % 4]]);
+        }
+        const double here = corner_angle_degrees(w, P, old);
+        if(other < 0 || here <= 135.0) continue;
+        // turn v towards w by half the difference
+        const double turn = (here - other) / 2 * 3.14159265358979323846 / 180;
+        const Point_2d d = minus_2d(old, P), e = minus_2d(w, P);
+        const double sense = cross_2d(d, e) > 0 ? 1.0 : -1.0;
+        const double cs = std::cos(sense * turn), sn = std::sin(sense * turn);
+        targets.push_back(Point_2d{ P.x + cs * d.x - sn * d.y, P.y + sn * d.x + cs * d.y });
+      }
+    }
+  }
+
   // the optimised positions back into the kernel: boundary points exactly on their edge
   void write_back(const std::vector<std::size_t>& movable)
   {
@@ -862,6 +868,15 @@ private:
 
   // a core vertex the repair moves of optimize() moved
   bool repaired(std::size_t v) const { return v < m_repaired.size() && m_repaired[v] != 0; }
+
+  // a quad the buffer stages made or changed: a vertex new, on the core boundary or moved by
+  // the repair (the other core quads keep their lattice angles, in [45, 135])
+  bool made_or_changed(const Quad& Q) const
+  {
+    for(std::size_t v : Q)
+      if(v >= m_core_points || on_cycle(v) || repaired(v)) return true;
+    return false;
+  }
 
   bool is_core_boundary(std::size_t v) const
   {
@@ -1326,7 +1341,7 @@ private:
         for(std::size_t v : it->first) candidate = candidate || v >= first_candidate;
         it = candidate ? m_cost_cache.erase(it) : std::next(it);
       }
-      std::unordered_map<std::size_t, std::size_t> real_id;
+      std::vector<std::size_t> real_id(n, none); // by candidate id - first_candidate
       for(std::size_t r = n; r-- > 0;) { // from the back: earlier chain positions stay valid
         if(!res.inserted[r]) continue;
         std::size_t id;
@@ -1336,17 +1351,15 @@ private:
           const Loop_locator::Hit h = locate_param(l, sites[r].param);
           id = point_on_edge(l, h.edge, h.t);
         }
-        real_id[extra[r].id] = id;
+        real_id[extra[r].id - first_candidate] = id;
         const std::size_t after = g[r] + extra[r].edge;
         gid.insert(gid.begin() + std::ptrdiff_t(after + 1), id);
         gparam.insert(gparam.begin() + std::ptrdiff_t(after + 1), sites[r].param);
         for(auto& x : g) if(x > after) ++x;
       }
       for(Quad& q : res.quads)
-        for(std::size_t& v : q) {
-          auto it = real_id.find(v);
-          if(it != real_id.end()) v = it->second;
-        }
+        for(std::size_t& v : q)
+          if(v >= first_candidate && v - first_candidate < real_id.size()) v = real_id[v - first_candidate];
       return res;
     };
     m_cache_costs = true;
