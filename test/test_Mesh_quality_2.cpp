@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <numeric>
 #include <vector>
 
@@ -222,6 +223,40 @@ TEST(MeshQuality2, NearDuplicateVertices)
     EXPECT_EQ(q.number_of_near_duplicate_vertices, gap < 1e-9 ? 2u : 0u) << gap;
     EXPECT_TRUE(q.is_valid()) << gap; // a point cloud may hold points this close
   }
+}
+
+TEST(MeshQuality2, NearDuplicatePairsMatchAllPairs)
+{
+  using CGAL::Quad_mesher_2::internal::Point_2d;
+  // A quadtree-like grid (whole columns share one x) with pairs and triples of points within,
+  // at and beyond the tolerance, some straddling the borders of the tolerance-wide columns:
+  // the sorted sweep must count exactly the pairs an all-pairs scan finds.
+  const double tol = 1e-3;
+  std::vector<Point_2d> pts;
+  for(int i = 0; i < 30; ++i)
+    for(int j = 0; j < 30; ++j)
+      pts.push_back(Point_2d{ 0.1 * i, 0.1 * j });
+  std::uint64_t state = 12345;
+  auto uniform = [&]() {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return double(state >> 11) / double(1ULL << 53);
+  };
+  for(int k = 0; k < 300; ++k) {
+    const Point_2d& base = pts[std::size_t(uniform() * 900)];
+    const double dx = (uniform() - 0.5) * 3 * tol, dy = (uniform() - 0.5) * 3 * tol;
+    pts.push_back(Point_2d{ base.x + dx, base.y + dy });
+    if(k % 3 == 0) pts.push_back(Point_2d{ base.x + dx, base.y + dy + (k % 2 ? tol : 2 * tol) });
+  }
+  std::vector<char> used(pts.size(), 1);
+  used[7] = 0; // unused points do not count
+  std::size_t expected = 0;
+  for(std::size_t a = 0; a < pts.size(); ++a)
+    for(std::size_t b = a + 1; b < pts.size(); ++b)
+      if(used[a] && used[b] && std::abs(pts[a].x - pts[b].x) <= tol && std::abs(pts[a].y - pts[b].y) <= tol)
+        ++expected;
+  EXPECT_GT(expected, 100u);
+  EXPECT_EQ(CGAL::Quad_mesher_2::internal::count_near_duplicate_pairs(pts, used, Point_2d{ -0.01, -0.01 }, tol),
+            expected);
 }
 
 TEST(MeshQuality2, NonManifoldEdges)

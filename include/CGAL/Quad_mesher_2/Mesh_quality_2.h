@@ -173,6 +173,42 @@ private:
   std::vector<Quality_edge_entry> m_entries;
 };
 
+/// Counts the pairs of used vertices within `tol` of each other in x and in y. The points are
+/// sorted by columns `tol` wide, then by y: a pair lies in one column or in two neighbouring
+/// ones (a quadtree's vertices share their x by the thousand, so a sweep along x alone would
+/// compare each with its whole column).
+inline std::size_t count_near_duplicate_pairs(const std::vector<Point_2d>& pts, const std::vector<char>& used,
+                                              const Point_2d& lo, double tol)
+{
+  struct Entry
+  {
+    std::int64_t column;
+    double x, y;
+    bool operator<(const Entry& o) const { return column < o.column || (column == o.column && y < o.y); }
+  };
+  std::vector<Entry> sorted;
+  for(std::size_t v = 0; v < pts.size(); ++v)
+    if(used[v])
+      sorted.push_back(Entry{ tol > 0 ? std::int64_t(std::floor((pts[v].x - lo.x) / tol)) : 0, pts[v].x, pts[v].y });
+  std::sort(sorted.begin(), sorted.end());
+  auto near = [&](const Entry& a, const Entry& b) { return std::abs(a.x - b.x) <= tol && std::abs(a.y - b.y) <= tol; };
+  std::size_t count = 0;
+  for(std::size_t i = 0; i < sorted.size(); ++i) {
+    const Entry& p = sorted[i];
+    std::size_t j = i + 1;
+    for(; j < sorted.size() && sorted[j].column == p.column && sorted[j].y - p.y <= tol; ++j)
+      count += near(p, sorted[j]) ? 1 : 0;
+    // the next two columns (two: the division may round across one)
+    for(std::int64_t dc = 1; dc <= 2 && tol > 0; ++dc) {
+      const Entry key{ p.column + dc, 0.0, p.y - tol };
+      auto k = std::lower_bound(sorted.begin() + std::ptrdiff_t(j), sorted.end(), key);
+      for(; k != sorted.end() && k->column == key.column && k->y - p.y <= tol; ++k)
+        count += near(p, *k) ? 1 : 0;
+    }
+  }
+  return count;
+}
+
 /// Counts the used vertices lying strictly inside (farther than `tol` from both ends, within
 /// `tol` of the line) one of the `edges` (halfedge ids) of a quad they do not belong to.
 /// Edges are binned in a uniform grid by their bounding boxes grown by `tol`.
@@ -404,19 +440,8 @@ Mesh_quality_2 compute_quality(const Quad_mesh_2<Point_2>& mesh)
       if(sorted[i].x == sorted[i - 1].x && sorted[i].y == sorted[i - 1].y)
         ++r.number_of_duplicate_vertices;
   }
-  {
-    std::vector<Point_2d> sorted;
-    for(std::size_t v = 0; v < np; ++v)
-      if(used[v]) sorted.push_back(pts[v]);
-    std::sort(sorted.begin(), sorted.end(), [](const Point_2d& a, const Point_2d& b) {
-      return a.x < b.x || (a.x == b.x && a.y < b.y);
-    });
-    const double tol = 1e-9 * internal::length_2d(internal::minus_2d(hi, lo));
-    for(std::size_t i = 0; i < sorted.size(); ++i)
-      for(std::size_t j = i + 1; j < sorted.size() && sorted[j].x - sorted[i].x <= tol; ++j)
-        if(std::abs(sorted[j].y - sorted[i].y) <= tol)
-          ++r.number_of_near_duplicate_vertices;
-  }
+  r.number_of_near_duplicate_vertices =
+    internal::count_near_duplicate_pairs(pts, used, lo, 1e-9 * internal::length_2d(internal::minus_2d(hi, lo)));
 
   // Edge usage: non-manifold edges and boundary (used-once) halfedges.
   const internal::Quality_edge_table table(mesh.quads, skip, np);

@@ -26,7 +26,9 @@ namespace IO {
 /// single surface (tag 1) whose bounding box is that of the points, `$Nodes` (one block on
 /// that surface, node tags 1..n in the order of `mesh.points`, z = 0) and `$Elements` (one
 /// block of type 3, the 4-node quadrangle, element tags 1..m in the order of `mesh.quads`).
-/// Coordinates are converted with `CGAL::to_double` and written with `max_digits10` digits.
+/// Coordinates are converted with `CGAL::to_double`; the node coordinates are written as the
+/// shortest decimals that read back as the same doubles, the bounding box with `max_digits10`
+/// digits.
 /// Returns `false`, without throwing, if the stream fails or a quad index is out of range.
 /// The stream's precision and format flags are restored.
 template <class Point_2>
@@ -63,10 +65,12 @@ bool write_MSH(std::ostream& os, const Quad_mesh_2<Point_2>& mesh)
     } else {
       out << "1 " << n << " 1 " << n << '\n'; // numEntityBlocks numNodes minNodeTag maxNodeTag
       out << "2 1 0 " << n << '\n';           // entityDim entityTag parametric numNodesInBlock
+      Quad_mesher_2::internal::Text_buffer text(out);
       for(std::size_t i = 1; i <= n; ++i)
-        out << i << '\n';
+        text << i << '\n';
       for(const Point_2& p : mesh.points)
-        out << CGAL::to_double(p.x()) << ' ' << CGAL::to_double(p.y()) << " 0\n";
+        text << CGAL::to_double(p.x()) << ' ' << CGAL::to_double(p.y()) << " 0\n";
+      text.flush();
     }
     out << "$EndNodes\n";
 
@@ -76,9 +80,11 @@ bool write_MSH(std::ostream& os, const Quad_mesh_2<Point_2>& mesh)
     } else {
       out << "1 " << m << " 1 " << m << '\n'; // numEntityBlocks numElements minTag maxTag
       out << "2 1 3 " << m << '\n';           // entityDim entityTag elementType numElements
+      Quad_mesher_2::internal::Text_buffer text(out);
       std::size_t tag = 1;
       for(const auto& q : mesh.quads)
-        out << tag++ << ' ' << q[0] + 1 << ' ' << q[1] + 1 << ' ' << q[2] + 1 << ' ' << q[3] + 1 << '\n';
+        text << tag++ << ' ' << q[0] + 1 << ' ' << q[1] + 1 << ' ' << q[2] + 1 << ' ' << q[3] + 1 << '\n';
+      text.flush();
     }
     out << "$EndElements\n";
     return out.good();

@@ -21,8 +21,8 @@ namespace IO {
 
 /// \ingroup PkgQuadMesher2IO
 /// Writes `mesh` as an ASCII OFF file: header `OFF`, counts, one `x y 0` line per point
-/// (converted with `CGAL::to_double`, written with `max_digits10` digits so that doubles
-/// round-trip), then one `4 a b c d` line per quad (0-based indices).
+/// (converted with `CGAL::to_double`, written as the shortest decimals that read back as the
+/// same doubles), then one `4 a b c d` line per quad (0-based indices).
 /// CGAL's own `CGAL::IO::write_OFF` needs 3D points and does not compile with EPECK
 /// polygon soups; this writer works for any 2D kernel point.
 /// Returns `false`, without throwing, if the stream fails or a quad index is out of range.
@@ -35,10 +35,12 @@ bool write_OFF(std::ostream& os, const Quad_mesh_2<Point_2>& mesh)
   return Quad_mesher_2::internal::guarded_write(os, [&](std::ostream& out) {
     out << std::setprecision(std::numeric_limits<double>::max_digits10);
     out << "OFF\n" << mesh.points.size() << ' ' << mesh.quads.size() << " 0\n";
+    Quad_mesher_2::internal::Text_buffer text(out);
     for(const Point_2& p : mesh.points)
-      out << CGAL::to_double(p.x()) << ' ' << CGAL::to_double(p.y()) << " 0\n";
+      text << CGAL::to_double(p.x()) << ' ' << CGAL::to_double(p.y()) << " 0\n";
     for(const auto& q : mesh.quads)
-      out << "4 " << q[0] << ' ' << q[1] << ' ' << q[2] << ' ' << q[3] << '\n';
+      text << "4 " << q[0] << ' ' << q[1] << ' ' << q[2] << ' ' << q[3] << '\n';
+    text.flush();
     return out.good();
   });
 }

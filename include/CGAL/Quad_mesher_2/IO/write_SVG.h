@@ -160,19 +160,21 @@ bool write_SVG(std::ostream& os, const Quad_mesh_2<Point_2>& mesh,
     out << "</style>\n";
 
     out << "<g stroke=\"#222222\" stroke-width=\"" << stroke << "\" stroke-linejoin=\"round\">\n";
+    Quad_mesher_2::internal::Text_buffer text(out, 6);
     for(int c = 0; c <= internal::svg_bad_class; ++c) {
       if(by_class[c].empty())
         continue;
-      out << "<g class=\"c" << c << "\">\n";
+      text << "<g class=\"c" << c << "\">\n";
       for(std::size_t i : by_class[c]) {
         const auto& q = mesh.quads[i];
-        out << "<polygon points=\"";
+        text << "<polygon points=\"";
         for(int k = 0; k < 4; ++k)
-          out << (k ? " " : "") << X(pts[q[k]]) << ',' << Y(pts[q[k]]);
-        out << "\"/>\n";
+          text << (k ? " " : "") << X(pts[q[k]]) << ',' << Y(pts[q[k]]);
+        text << "\"/>\n";
       }
-      out << "</g>\n";
+      text << "</g>\n";
     }
+    text.flush();
     out << "</g>\n";
 
     if(!segs.empty()) {

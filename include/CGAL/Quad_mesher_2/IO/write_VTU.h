@@ -24,8 +24,9 @@ namespace IO {
 
 /// \ingroup PkgQuadMesher2IO
 /// Writes `mesh` as a VTK XML unstructured grid (`.vtu`, ASCII), readable by ParaView: the
-/// points (z = 0, `Float64`, `max_digits10` digits), the quads as cells of type `VTK_QUAD`
-/// (9) with `Int64` connectivity and offsets, and two cell fields for colouring:
+/// points (z = 0, `Float64`, the shortest decimals that read back as the same doubles), the
+/// quads as cells of type `VTK_QUAD` (9) with `Int64` connectivity and offsets, and two cell
+/// fields for colouring:
 /// `scaled_jacobian` (minimum over the corners) and `max_angle_deviation` (largest
 /// |angle - 90| over the corners, in degrees), both computed in double.
 /// Returns `false`, without throwing, if the stream fails or a quad index is out of range.
@@ -46,15 +47,18 @@ bool write_VTU(std::ostream& os, const Quad_mesh_2<Point_2>& mesh)
 
     out << "      <Points>\n"
            "        <DataArray type=\"Float64\" Name=\"Points\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+    Quad_mesher_2::internal::Text_buffer text(out);
     for(const Point_2& p : mesh.points)
-      out << CGAL::to_double(p.x()) << ' ' << CGAL::to_double(p.y()) << " 0\n";
+      text << CGAL::to_double(p.x()) << ' ' << CGAL::to_double(p.y()) << " 0\n";
+    text.flush();
     out << "        </DataArray>\n"
            "      </Points>\n";
 
     out << "      <Cells>\n"
            "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
     for(const auto& q : mesh.quads)
-      out << q[0] << ' ' << q[1] << ' ' << q[2] << ' ' << q[3] << '\n';
+      text << q[0] << ' ' << q[1] << ' ' << q[2] << ' ' << q[3] << '\n';
+    text.flush();
     out << "        </DataArray>\n"
            "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
     for(std::size_t i = 1; i <= m; ++i)

@@ -271,17 +271,22 @@ inline double quad_badness(const std::array<Point_2d, 4>& q)
 {
   // at a convex corner |angle - 90| = asin(|cos angle|), increasing in |cos|: one asin for
   // the worst corner instead of an atan2 per corner (the buffer's inner loops call this)
+  // edge k runs from corner k to corner k + 1; each length is taken once
+  std::array<Point_2d, 4> e;
+  std::array<double, 4> len;
+  for(int k = 0; k < 4; ++k) {
+    e[k] = minus_2d(q[(k + 1) % 4], q[k]);
+    len[k] = length_2d(e[k]);
+  }
   double worst_cos = 0;
   for(int c = 0; c < 4; ++c) {
-    const Point_2d& p = q[(c + 3) % 4];
-    const Point_2d& v = q[c];
-    const Point_2d& n = q[(c + 1) % 4];
-    const double cr = cross_2d(minus_2d(v, p), minus_2d(n, v));
-    const Point_2d e1 = minus_2d(n, v), e2 = minus_2d(p, v);
-    const double l1 = length_2d(e1), l2 = length_2d(e2);
+    const Point_2d& in = e[(c + 3) % 4];
+    const Point_2d& out = e[c];
+    const double cr = cross_2d(in, out);
+    const double l1 = len[c], l2 = len[(c + 3) % 4];
     if(!(cr > 1e-6 * l1 * l2) || l1 == 0 || l2 == 0) // flat corners count as invalid
       return 1000.0 + (cr < 0 ? 100.0 : 0.0);
-    worst_cos = (std::max)(worst_cos, std::abs(dot_2d(e1, e2)) / (l1 * l2));
+    worst_cos = (std::max)(worst_cos, std::abs(dot_2d(out, in)) / (l1 * l2));
   }
   return std::asin((std::min)(worst_cos, 1.0)) * (180.0 / 3.14159265358979323846);
 }
@@ -487,20 +492,27 @@ public:
         sum += b * b;
       }
     };
-    auto local = [&](std::size_t i, const Point_2d& f, const Point_2d& g) {
+    // F_i at f, its boundary point from g_at(f) (asked only when needed). With `bound`, stops
+    // once the result cannot be below it: each quad only adds.
+    auto local = [&](std::size_t i, const Point_2d& f, auto&& g_at, const Local* bound) {
       const std::size_t p = (i + n - 1) % n, q = (i + 1) % n;
       Local r;
-      r.add(quad_badness({ m_xy[cyc[p]], F[p], f, m_xy[cyc[i]] }));
-      r.add(quad_badness({ m_xy[cyc[i]], f, F[q], m_xy[cyc[q]] }));
-      r.add(quad_badness({ F[p], G[p], g, f }));
-      r.add(quad_badness({ f, g, G[q], F[q] }));
+      auto add = [&](const std::array<Point_2d, 4>& quad) {
+        r.add(quad_badness(quad));
+        return bound == nullptr || r < *bound;
+      };
+      if(!add({ m_xy[cyc[p]], F[p], f, m_xy[cyc[i]] }) || !add({ m_xy[cyc[i]], f, F[q], m_xy[cyc[q]] }))
+        return r;
+      const Point_2d g = g_at(f);
+      if(add({ F[p], G[p], g, f }))
+        add({ f, g, G[q], F[q] });
       return r;
     };
     for(int pass = 0; pass < 8; ++pass) {
       bool moved = false;
       for(std::size_t i = 0; i < n; ++i) {
         if(reach[i] == 0) continue;
-        Local best = local(i, F[i], G[i]);
+        Local best = local(i, F[i], [&](const Point_2d&) { return G[i]; }, nullptr);
         if(best.invalid == 0 && best.out == 0 && best.worst <= 20.0) continue;
         const double h = m_size[cyc[i]];
         Point_2d best_f = F[i], best_g = G[i];
@@ -516,9 +528,9 @@ public:
           }
         for(const Point_2d& f : tries) {
           if(length_2d(minus_2d(f, start[i])) > reach[i]) continue;
-          const Loop_locator::Hit own = m_locator->closest(f, 2 * h, l);
-          const Local r = local(i, f, own.point);
-          if(r < best) { best = r; best_f = f; best_g = own.point; }
+          Point_2d g{ 0, 0 };
+          const Local r = local(i, f, [&](const Point_2d& at) { return g = m_locator->closest(at, 2 * h, l).point; }, &best);
+          if(r < best) { best = r; best_f = f; best_g = g; }
         }
         if(best_f.x != F[i].x || best_f.y != F[i].y) {
           F[i] = best_f;
@@ -641,9 +653,10 @@ public:
       }
     };
     const double min_edge = 1e-8 * m_locator->diagonal();
-    auto local_cost = [&](std::size_t v) {
+    // With `bound`, the caller keeps the result only if it is below *bound: every quad only adds
+    // to the cost, so the sum stops as soon as it cannot be (same decisions, far fewer quads).
+    auto local_cost = [&](std::size_t v, const Local* bound) {
       Local r;
-      double angle_sum = 0;
       for(std::size_t q : quads_at[v]) {
         const double b = cost(m_mesh.quads[q]);
         r.worst = (std::max)(r.worst, b);
@@ -652,15 +665,24 @@ public:
         const Quad& Q = m_mesh.quads[q];
         int c = 0;
         while(Q[c] != v) ++c;
-        angle_sum += corner_angle_degrees(m_xy[Q[(c + 3) % 4]], m_xy[v], m_xy[Q[(c + 1) % 4]]);
         // an edge collapsing to a point keeps the angles fine but merges two vertices: the
         // whole-mesh check rejects vertices within 1e-9 of the diagonal
         for(int side : { 1, 3 })
           if(length_2d(minus_2d(m_xy[Q[(c + side) % 4]], m_xy[v])) <= min_edge) ++r.invalid;
+        if(bound != nullptr && !(r < *bound)) return r;
       }
       const double expected = m_slide.count(v) ? 180.0 : (is_core_boundary(v) ? -1 : 360.0);
-      if(expected > 0 && std::abs(angle_sum - expected) > 1e-6)
-        r.invalid += 1 << 20; // folded
+      if(expected > 0) {
+        double angle_sum = 0;
+        for(std::size_t q : quads_at[v]) {
+          const Quad& Q = m_mesh.quads[q];
+          int c = 0;
+          while(Q[c] != v) ++c;
+          angle_sum += corner_angle_degrees(m_xy[Q[(c + 3) % 4]], m_xy[v], m_xy[Q[(c + 1) % 4]]);
+        }
+        if(std::abs(angle_sum - expected) > 1e-6)
+          r.invalid += 1 << 20; // folded
+      }
       return r;
     };
     // a vertex whose quads have not changed since it was last tried would not move: only
@@ -671,7 +693,7 @@ public:
         bool improved = false;
         for(std::size_t v : vertices) {
           if(!dirty[v]) continue;
-          const Local current = local_cost(v);
+          const Local current = local_cost(v, nullptr);
           if(current.worst <= 30.0) continue; // within [60, 120]: good enough
           const Point_2d old = m_xy[v];
           std::vector<Point_2d> targets;
@@ -701,7 +723,7 @@ public:
               Point_2d p{old.x + step * (t.x - old.x), old.y + step * (t.y - old.y)};
               if(!slide_to(v, p)) continue;
               m_xy[v] = p;
-              const Local c = local_cost(v);
+              const Local c = local_cost(v, &best);
               m_xy[v] = old;
               if(c < best) {
                 best = c;
