@@ -1503,6 +1503,26 @@ private:
       return Triangle{ state == 3 ? extra[r].id : G(end + M - 1), G(end), F(r + 1) };
     };
     struct Step { std::size_t mid; int state; bool ins; };
+    // A gap's ways to triangulate (with or without its extra node, the fan's middle) cost the
+    // same whatever state the cycle starts in: each is costed once, when first reached, and
+    // the runs from the four start states only add up.
+    struct Option
+    {
+      std::size_t mid;
+      bool ins;
+      std::vector<Triangle> t;
+      bool paired[2] = { false, false }; // by whether a pending triangle comes in
+      std::vector<double> pair_costs[2];
+      int out[2] = { 0, 0 };
+      std::array<double, 4> with_pending = { { -1, -1, -1, -1 } }; // by incoming state
+    };
+    std::vector<std::vector<Option>> options(n);
+    for(std::size_t r = 0; r < n; ++r)
+      for(bool ins : { false, true }) {
+        if(ins && extra[r].edge == none) continue;
+        const std::size_t k = k_of[r] + (ins ? 1 : 0);
+        for(std::size_t mid = 0; mid <= k; ++mid) options[r].push_back(Option{ mid, ins, triangles(r, ins, mid) });
+      }
     Strip_result result;
     std::vector<Step> best_steps;
     int best_start = 0;
@@ -1515,19 +1535,24 @@ private:
       for(std::size_t r = 0; r < n; ++r)
         for(int s = 0; s < 4; ++s) {
           if(best[r][s].worst == HUGE_VAL) continue;
-          const Triangle in = s == 0 ? Triangle{} : pending(r == 0 ? n - 1 : r - 1, s);
-          for(bool ins : { false, true }) {
-            if(ins && extra[r].edge == none) continue;
-            const std::size_t k = k_of[r] + (ins ? 1 : 0);
-            for(std::size_t mid = 0; mid <= k; ++mid) {
-              const auto t = triangles(r, ins, mid);
-              Cost cst = best[r][s];
-              std::size_t pos = 0;
-              if(s != 0) { cst.add(cost(merge(in, t[0]))); pos = 1; }
-              for(; pos + 1 < t.size(); pos += 2) cst.add(cost(merge(t[pos], t[pos + 1])));
-              const int out = pos == t.size() ? 0 : mid == k ? 1 : (ins && last_edge_extra(r)) ? 3 : 2;
-              if(cst < best[r + 1][out]) { best[r + 1][out] = cst; back[r + 1][out] = Step{ mid, s, ins }; }
+          const int p = s != 0 ? 1 : 0;
+          for(Option& o : options[r]) {
+            const auto& t = o.t;
+            if(!o.paired[p]) {
+              std::size_t pos = std::size_t(p);
+              for(; pos + 1 < t.size(); pos += 2) o.pair_costs[p].push_back(cost(merge(t[pos], t[pos + 1])));
+              const std::size_t k = k_of[r] + (o.ins ? 1 : 0);
+              o.out[p] = pos == t.size() ? 0 : o.mid == k ? 1 : (o.ins && last_edge_extra(r)) ? 3 : 2;
+              o.paired[p] = true;
             }
+            Cost cst = best[r][s];
+            if(s != 0) {
+              if(o.with_pending[s] < 0) o.with_pending[s] = cost(merge(pending(r == 0 ? n - 1 : r - 1, s), t[0]));
+              cst.add(o.with_pending[s]);
+            }
+            for(double c : o.pair_costs[p]) cst.add(c);
+            const int out = o.out[p];
+            if(cst < best[r + 1][out]) { best[r + 1][out] = cst; back[r + 1][out] = Step{ o.mid, s, o.ins }; }
           }
         }
       if(best[n][start] < result.cost) {
