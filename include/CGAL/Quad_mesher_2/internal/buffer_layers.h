@@ -67,29 +67,65 @@ namespace CGAL {
 namespace Quad_mesher_2 {
 namespace internal {
 
+/// The quads at each vertex of a quad mesh, in increasing order: compressed rows (two arrays
+/// for the whole mesh, not a vector per vertex, which cost more than the buffer's own work on
+/// large cores).
+class Vertex_quads
+{
+public:
+  struct Range
+  {
+    const std::size_t* first;
+    const std::size_t* last;
+    const std::size_t* begin() const { return first; }
+    const std::size_t* end() const { return last; }
+    std::size_t size() const { return std::size_t(last - first); }
+  };
+
+  Vertex_quads(const std::vector<std::array<std::size_t, 4>>& quads, std::size_t n_points)
+    : m_offsets(n_points + 1, 0), m_quads(4 * quads.size())
+  {
+    for(const auto& q : quads)
+      for(std::size_t v : q) ++m_offsets[v + 1];
+    for(std::size_t v = 0; v < n_points; ++v) m_offsets[v + 1] += m_offsets[v];
+    std::vector<std::size_t> fill(m_offsets.begin(), m_offsets.end() - 1);
+    for(std::size_t q = 0; q < quads.size(); ++q)
+      for(std::size_t v : quads[q]) m_quads[fill[v]++] = q;
+  }
+
+  Range operator[](std::size_t v) const { return Range{ m_quads.data() + m_offsets[v], m_quads.data() + m_offsets[v + 1] }; }
+
+private:
+  std::vector<std::size_t> m_offsets;
+  std::vector<std::size_t> m_quads;
+};
+
 /// the oriented boundary loops of a quad mesh whose boundary vertices all have two boundary
 /// edges (the core after the clearance): each loop has the mesh on its left
 inline std::vector<std::vector<std::size_t>>
 mesh_boundary_cycles(const std::vector<std::array<std::size_t, 4>>& quads, std::size_t n_points)
 {
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> edges; // (undirected key, directed code)
-  edges.reserve(4 * quads.size());
+  // directed edges by their source (compressed rows); edge a -> b lies on the boundary if it
+  // is the only one of a -> b and b -> a. Where several leave one vertex, the largest target
+  // wins (they cannot: see the precondition).
+  std::vector<std::size_t> offsets(n_points + 1, 0), targets(4 * quads.size());
   for(const auto& q : quads)
-    for(int e = 0; e < 4; ++e) {
-      std::uint64_t a = q[e], b = q[(e + 1) % 4];
-      edges.emplace_back((std::min(a, b) << 32) | std::max(a, b), a < b ? 0u : 1u);
-    }
-  std::sort(edges.begin(), edges.end());
-  std::vector<std::size_t> next(n_points, std::size_t(-1));
-  for(std::size_t k = 0; k < edges.size();) {
-    std::size_t e = k;
-    while(e < edges.size() && edges[e].first == edges[k].first) ++e;
-    if(e - k == 1) {
-      std::size_t lo = std::size_t(edges[k].first >> 32), hi = std::size_t(edges[k].first & 0xffffffffu);
-      if(edges[k].second == 0) next[lo] = hi; else next[hi] = lo;
-    }
-    k = e;
+    for(std::size_t v : q) ++offsets[v + 1];
+  for(std::size_t v = 0; v < n_points; ++v) offsets[v + 1] += offsets[v];
+  {
+    std::vector<std::size_t> fill(offsets.begin(), offsets.end() - 1);
+    for(const auto& q : quads)
+      for(int e = 0; e < 4; ++e) targets[fill[q[e]]++] = q[(e + 1) % 4];
   }
+  auto count = [&](std::size_t a, std::size_t b) {
+    return std::size_t(std::count(targets.begin() + std::ptrdiff_t(offsets[a]), targets.begin() + std::ptrdiff_t(offsets[a + 1]), b));
+  };
+  std::vector<std::size_t> next(n_points, std::size_t(-1));
+  for(std::size_t a = 0; a < n_points; ++a)
+    for(std::size_t i = offsets[a]; i < offsets[a + 1]; ++i) {
+      const std::size_t b = targets[i];
+      if(count(a, b) + count(b, a) == 1 && (next[a] == std::size_t(-1) || b > next[a])) next[a] = b;
+    }
   std::vector<std::vector<std::size_t>> cycles;
   std::vector<bool> seen(n_points, false);
   for(std::size_t v = 0; v < n_points; ++v) {
@@ -385,10 +421,7 @@ public:
   /// Stage "templates": moves the core's notch vertices into the buffer (see the file comment).
   void relax_notches()
   {
-    std::vector<std::vector<std::size_t>> quads_at(m_mesh.points.size());
-    for(std::size_t q = 0; q < m_mesh.quads.size(); ++q)
-      for(int c = 0; c < 4; ++c)
-        quads_at[m_mesh.quads[q][c]].push_back(q);
+    const Vertex_quads quads_at(m_mesh.quads, m_mesh.points.size());
     for(int pass = 0; pass < 3; ++pass) {
       bool changed = false;
       for(const auto& cyc : m_cycles) {
@@ -629,10 +662,7 @@ public:
   /// `fixed_points` (a domain's isolated points) never move.
   void optimize(const std::vector<std::size_t>& fixed_points, int passes = 12)
   {
-    std::vector<std::vector<std::size_t>> quads_at(m_mesh.points.size());
-    for(std::size_t q = 0; q < m_mesh.quads.size(); ++q)
-      for(int c = 0; c < 4; ++c)
-        quads_at[m_mesh.quads[q][c]].push_back(q);
+    const Vertex_quads quads_at(m_mesh.quads, m_mesh.points.size());
     std::vector<std::size_t> movable;
     for(const auto& cyc : m_cycles)
       movable.insert(movable.end(), cyc.begin(), cyc.end());
@@ -806,7 +836,7 @@ public:
 private:
   // Beside an input corner, v turns about it to share the corner's angle evenly between the
   // two quads it separates there (the paper's rotated bisectors, §5): one target per corner.
-  void add_turns_about_corners(std::size_t v, const std::vector<std::vector<std::size_t>>& quads_at,
+  void add_turns_about_corners(std::size_t v, const Vertex_quads& quads_at,
                                std::vector<Point_2d>& targets) const
   {
     const Point_2d old = m_xy[v];
@@ -950,7 +980,7 @@ private:
   }
 
   bool try_move_notch(std::size_t a2, std::size_t a, std::size_t b, std::size_t c, std::size_t c2,
-                      const std::vector<std::vector<std::size_t>>& quads_at)
+                      const Vertex_quads& quads_at)
   {
     const double beta = right_side_angle(m_xy[a], m_xy[b], m_xy[c]);
     if(beta >= 112.5 - 1e-9)
