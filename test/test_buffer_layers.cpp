@@ -810,10 +810,11 @@ TEST(Buffer_layers, stages_on_triangle_A)
 
 // run() returns the best valid round, kept from its round when a later angle round was worse:
 // the mesher's state must then be that round's, so the stages run again on its quadtree give
-// the same mesh and the same buffer report (the guitar takes several rounds, the last worse)
+// the same mesh and the same buffer report (Lake Superior takes four rounds and returns an
+// earlier one: the last was worse)
 TEST(Buffer_layers, the_returned_round_is_the_mesher_state)
 {
-  const Domain d = load("guitar/guitar.poly");
+  const Domain d = load("lake_superior/lake_superior.poly");
   Mesher mesher(d);
   const Mesh m = mesher.run(Stage::BUFFER2);
   ASSERT_GT(mesher.rounds(), 2);
@@ -825,6 +826,15 @@ TEST(Buffer_layers, the_returned_round_is_the_mesher_state)
   EXPECT_EQ(again.points, m.points);
   EXPECT_EQ(mesher.buffer_report().bad_angle_quads, report.bad_angle_quads);
   EXPECT_EQ(mesher.buffer_report().second_layer_quads, report.second_layer_quads);
+  // the whole-mesh check run() keeps is the returned mesh's, not the last round's
+  ASSERT_TRUE(mesher.quality().has_value());
+  const CGAL::Quad_mesher_2::Mesh_quality_2 q = CGAL::Quad_mesher_2::compute_quality(m);
+  EXPECT_EQ(mesher.quality()->number_of_quads, q.number_of_quads);
+  EXPECT_EQ(mesher.quality()->min_angle, q.min_angle);
+  EXPECT_EQ(mesher.quality()->max_angle, q.max_angle);
+  EXPECT_EQ(mesher.quality()->angle_histogram, q.angle_histogram);
+  mesher.run(Stage::CLEARANCE);
+  EXPECT_FALSE(mesher.quality().has_value());
 }
 
 // ---- 3. determinism -------------------------------------------------------------------------

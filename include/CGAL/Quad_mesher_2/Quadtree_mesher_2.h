@@ -26,6 +26,7 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -246,6 +247,7 @@ public:
   Mesh run(Stage last = Stage::POINTS)
   {
     m_extra_refinement.clear();
+    m_quality.reset();
     std::size_t best_bad = std::size_t(-1);
     // the best valid round's mesh and state, kept while later rounds try for better angles:
     // building it again would cost a whole round
@@ -262,7 +264,9 @@ public:
         return mesh;
       fill_buffer_zone(mesh, last);
       // the whole mesh is checked too: a buffer node on another quad's edge would hang
-      const Mesh_quality_2 quality = compute_quality(mesh);
+      const auto check_start = std::chrono::steady_clock::now();
+      const Mesh_quality_2& quality = *(m_quality = compute_quality(mesh));
+      record("check", check_start);
       const bool valid = m_buffer_report.failure.empty() && m_buffer_report.invalid_quads == 0
                          && quality.is_valid() && quality.number_of_near_duplicate_vertices == 0;
       // refined for validity first; for angles only once a round is valid
@@ -309,6 +313,9 @@ public:
     }
   }
 
+  /// the whole-mesh check of the mesh the last `run()` returned (its `compute_quality()`),
+  /// made there for runs past the clearance; empty after shorter runs
+  const std::optional<Mesh_quality_2>& quality() const { return m_quality; }
   /// how many times `run()` built the quadtree (1 + refinement rounds for the buffer layers)
   int rounds() const { return m_rounds; }
   /// what the buffer stages did in the last round
@@ -356,6 +363,7 @@ private:
     std::vector<std::size_t> point_vertices;
     std::vector<double> core_vertex_size;
     internal::Buffer_report buffer_report;
+    std::optional<Mesh_quality_2> quality;
   };
 
   // takes the current round's state (the next round builds its own)
@@ -372,6 +380,7 @@ private:
     r.point_vertices = std::move(m_point_vertices);
     r.core_vertex_size = std::move(m_core_vertex_size);
     r.buffer_report = std::move(m_buffer_report);
+    r.quality = std::move(m_quality);
     return r;
   }
 
@@ -386,6 +395,7 @@ private:
     m_point_vertices = std::move(r.point_vertices);
     m_core_vertex_size = std::move(r.core_vertex_size);
     m_buffer_report = std::move(r.buffer_report);
+    m_quality = std::move(r.quality);
     return std::move(r.mesh);
   }
 
@@ -673,6 +683,7 @@ private:
   std::vector<double> m_core_vertex_size;       // largest cell side at each core vertex
   std::vector<std::pair<internal::Point_2d, double>> m_extra_refinement; // (point, local size)
   internal::Buffer_report m_buffer_report;
+  std::optional<Mesh_quality_2> m_quality;
   int m_rounds = 0;
   Timings m_timings;
 };

@@ -1538,6 +1538,7 @@ private:
     // the runs from the four start states only add up.
     struct Option
     {
+      Option(std::size_t m, bool i, std::vector<Triangle> tr) : mid(m), ins(i), t(std::move(tr)) {}
       std::size_t mid;
       bool ins;
       std::vector<Triangle> t;
@@ -1551,7 +1552,7 @@ private:
       for(bool ins : { false, true }) {
         if(ins && extra[r].edge == none) continue;
         const std::size_t k = k_of[r] + (ins ? 1 : 0);
-        for(std::size_t mid = 0; mid <= k; ++mid) options[r].push_back(Option{ mid, ins, triangles(r, ins, mid) });
+        for(std::size_t mid = 0; mid <= k; ++mid) options[r].emplace_back(mid, ins, triangles(r, ins, mid));
       }
     Strip_result result;
     std::vector<Step> best_steps;
