@@ -802,8 +802,9 @@ public:
     if(!near_bad.empty()) {
       std::vector<std::size_t> all = near_bad;
       all.insert(all.end(), movable.begin(), movable.end());
-      std::fill(dirty.begin(), dirty.end(), 1);
-      std::fill(dirty_next.begin(), dirty_next.end(), 0);
+      // the first passes left every clean vertex where a try would leave it again: only the
+      // repair's own vertices join the dirty ones (same moves, far fewer tries)
+      for(std::size_t v : near_bad) dirty[v] = 1;
       run_passes(all);
     }
     write_back(movable);
