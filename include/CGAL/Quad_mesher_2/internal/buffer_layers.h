@@ -93,7 +93,10 @@ public:
       for(std::size_t v : quads[q]) m_quads[fill[v]++] = q;
   }
 
-  Range operator[](std::size_t v) const { return Range{ m_quads.data() + m_offsets[v], m_quads.data() + m_offsets[v + 1] }; }
+  Range operator[](std::size_t v) const
+  {
+    return Range{ m_quads.data() + m_offsets[v], m_quads.data() + m_offsets[v + 1] };
+  }
 
 private:
   std::vector<std::size_t> m_offsets;
@@ -118,7 +121,7 @@ mesh_boundary_cycles(const std::vector<std::array<std::size_t, 4>>& quads, std::
       for(int e = 0; e < 4; ++e) targets[fill[q[e]]++] = q[(e + 1) % 4];
   }
   auto count = [&](std::size_t a, std::size_t b) {
-    return std::size_t(std::count(targets.begin() + std::ptrdiff_t(offsets[a]), targets.begin() + std::ptrdiff_t(offsets[a + 1]), b));
+    return std::size_t(std::count(targets.data() + offsets[a], targets.data() + offsets[a + 1], b));
   };
   std::vector<std::size_t> next(n_points, std::size_t(-1));
   for(std::size_t a = 0; a < n_points; ++a)
@@ -562,7 +565,8 @@ public:
         for(const Point_2d& f : tries) {
           if(length_2d(minus_2d(f, start[i])) > reach[i]) continue;
           Point_2d g{ 0, 0 };
-          const Local r = local(i, f, [&](const Point_2d& at) { return g = m_locator->closest(at, 2 * h, l).point; }, &best);
+          auto boundary_point = [&](const Point_2d& at) { return g = m_locator->closest(at, 2 * h, l).point; };
+          const Local r = local(i, f, boundary_point, &best);
           if(r < best) { best = r; best_f = f; best_g = g; }
         }
         if(best_f.x != F[i].x || best_f.y != F[i].y) {

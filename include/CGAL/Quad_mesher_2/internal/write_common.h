@@ -53,7 +53,8 @@ public:
     if(m_digits == 0)
       return put(x);
     char digits[40];
-    const std::to_chars_result r = std::to_chars(digits, digits + sizeof(digits), x, std::chars_format::general, m_digits);
+    const std::to_chars_result r =
+      std::to_chars(digits, digits + sizeof(digits), x, std::chars_format::general, m_digits);
     m_text.append(digits, r.ptr);
     return spill();
   }
