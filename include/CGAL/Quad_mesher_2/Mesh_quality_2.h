@@ -193,18 +193,23 @@ inline std::size_t count_near_duplicate_pairs(const std::vector<Point_2d>& pts, 
   std::sort(sorted.begin(), sorted.end());
   auto near = [&](const Entry& a, const Entry& b) { return std::abs(a.x - b.x) <= tol && std::abs(a.y - b.y) <= tol; };
   std::size_t count = 0;
-  for(std::size_t i = 0; i < sorted.size(); ++i) {
-    const Entry& p = sorted[i];
-    std::size_t j = i + 1;
-    for(; j < sorted.size() && sorted[j].column == p.column && sorted[j].y - p.y <= tol; ++j)
-      count += near(p, sorted[j]) ? 1 : 0;
-    // the next two columns (two: the division may round across one)
-    for(std::int64_t dc = 1; dc <= 2 && tol > 0; ++dc) {
-      const Entry key{ p.column + dc, 0.0, p.y - tol };
-      auto k = std::lower_bound(sorted.begin() + std::ptrdiff_t(j), sorted.end(), key);
-      for(; k != sorted.end() && k->column == key.column && k->y - p.y <= tol; ++k)
-        count += near(p, *k) ? 1 : 0;
+  for(std::size_t first = 0; first < sorted.size();) { // one column [first, last) at a time
+    std::size_t last = first;
+    while(last < sorted.size() && sorted[last].column == sorted[first].column) ++last;
+    // the entries of the next two columns (two: the division may round across one), seldom any
+    const auto near_begin = sorted.begin() + std::ptrdiff_t(last);
+    auto near_end = near_begin;
+    while(near_end != sorted.end() && near_end->column <= sorted[first].column + 2) ++near_end;
+    for(std::size_t i = first; i < last; ++i) {
+      const Entry& p = sorted[i];
+      for(std::size_t j = i + 1; j < last && sorted[j].y - p.y <= tol; ++j)
+        count += near(p, sorted[j]) ? 1 : 0;
+      for(std::int64_t dc = 1; dc <= 2 && near_begin != near_end; ++dc)
+        for(auto k = std::lower_bound(near_begin, near_end, Entry{ p.column + dc, 0.0, p.y - tol });
+            k != near_end && k->column == p.column + dc && k->y - p.y <= tol; ++k)
+          count += near(p, *k) ? 1 : 0;
     }
+    first = last;
   }
   return count;
 }
