@@ -687,6 +687,7 @@ public:
       }
     };
     const double min_edge = 1e-8 * m_locator->diagonal();
+    const double min_edge2 = min_edge * min_edge;
     // With `bound`, the caller keeps the result only if it is below *bound: every quad only adds
     // to the cost, so the sum stops as soon as it cannot be (same decisions, far fewer quads).
     auto local_cost = [&](std::size_t v, const Local* bound) {
@@ -701,8 +702,10 @@ public:
         while(Q[c] != v) ++c;
         // an edge collapsing to a point keeps the angles fine but merges two vertices: the
         // whole-mesh check rejects vertices within 1e-9 of the diagonal
-        for(int side : { 1, 3 })
-          if(length_2d(minus_2d(m_xy[Q[(c + side) % 4]], m_xy[v])) <= min_edge) ++r.invalid;
+        for(int side : { 1, 3 }) {
+          const Point_2d d = minus_2d(m_xy[Q[(c + side) % 4]], m_xy[v]);
+          if(dot_2d(d, d) <= min_edge2) ++r.invalid;
+        }
         if(bound != nullptr && !(r < *bound)) return r;
       }
       const double expected = m_slide.count(v) ? 180.0 : (is_core_boundary(v) ? -1 : 360.0);
@@ -722,6 +725,7 @@ public:
     // a vertex whose quads have not changed since it was last tried would not move: only
     // vertices sharing a quad with a moved one are tried again (same result, far fewer tries)
     std::vector<char> dirty(m_mesh.points.size(), 1), dirty_next(m_mesh.points.size(), 0);
+    std::vector<Point_2d> targets;
     auto run_passes = [&](const std::vector<std::size_t>& vertices) {
       for(int pass = 0; pass < passes; ++pass) {
         bool improved = false;
@@ -730,7 +734,7 @@ public:
           const Local current = local_cost(v, nullptr);
           if(current.worst <= 30.0) continue; // within [60, 120]: good enough
           const Point_2d old = m_xy[v];
-          std::vector<Point_2d> targets;
+          targets.clear();
           Point_2d lap{0, 0};
           int nl = 0;
           for(std::size_t q : quads_at[v]) {
