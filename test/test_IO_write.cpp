@@ -386,6 +386,41 @@ TEST(IOWrite, SVGManyQuads)
   EXPECT_LT(os.str().size(), 100 * n * n + 4000); // about 100 bytes per quad at most
 }
 
+TEST(IOWrite, TextBufferWritesNumbersAsTheStreamWould)
+{
+  // shortest round-trip text for doubles, %g with a precision when given one (the SVG's 6),
+  // integers in full; pieces are handed on as the buffer fills
+  const double values[] = { 0.0, -0.0, 1.0, 0.1, 1.0 / 3.0, -2.5e-17, 123456789.123, 1e300, 2.2250738585072014e-308, 1000.0,
+                            999999.5, 1e-5 };
+  std::ostringstream shortest, six, expected_six;
+  {
+    CGAL::Quad_mesher_2::internal::Text_buffer a(shortest), b(six, 6);
+    for(int rep = 0; rep < 5000; ++rep) // past one piece
+      for(double v : values) {
+        a << v << ' ';
+        b << v << ' ';
+      }
+    a << std::size_t(18446744073709551615ull) << '\n' << "end";
+    a.flush();
+    b.flush();
+  }
+  expected_six.precision(6);
+  for(int rep = 0; rep < 5000; ++rep)
+    for(double v : values) expected_six << v << ' ';
+  EXPECT_EQ(six.str(), expected_six.str());
+  std::istringstream in(shortest.str());
+  for(int rep = 0; rep < 5000; ++rep)
+    for(double v : values) {
+      std::string token;
+      in >> token;
+      ASSERT_EQ(std::stod(token), v) << token; // reads back as the same double
+      if(rep == 0) {
+        EXPECT_LE(token.size(), 24u) << token;
+      }
+    }
+  EXPECT_EQ(shortest.str().substr(shortest.str().size() - 24), "18446744073709551615\nend");
+}
+
 TEST(IOWrite, DispatchByExtension)
 {
   using namespace qm2_test_io_write;
