@@ -1211,6 +1211,8 @@ private:
         const std::size_t first_kept = a == 0 ? 0 : (std::max)(a, anchor - 1);
         last_kept = (std::min)(b, first_kept + 2);
         anchor = first_kept;
+        if(last_kept == first_kept + 2)
+          open_fan(c, rot(first_kept), rot(first_kept + 1), rot(last_kept), loop_xy[snap[rot(a)]]);
       }
       auto spacing = [&](std::size_t r1, std::size_t r2) {
         return length_2d(minus_2d(F[rot(r1)], F[rot(r2)]));
@@ -1484,6 +1486,34 @@ private:
       add_quad(q);
       ++m_report.second_layer_quads;
     }
+  }
+
+  // The F points of a corner's fan of three come from the core's notch around it and may
+  // bunch on one side: the middle one then lies near the chord of the other two and the fan's
+  // middle quad is flat (greenland's 300-degree corner at (255, 350.5): 25 degrees). The
+  // middle F point moves towards the far corner of the parallelogram on the corner and the
+  // other two while that lowers the worst of that quad and its two first-layer quads.
+  void open_fan(std::size_t c, std::size_t a, std::size_t m, std::size_t b, const Point_2d& corner)
+  {
+    const auto& cyc = m_cycles[c];
+    auto& F = m_first[c];
+    auto worst = [&](const Point_2d& f) {
+      return (std::max)({ quad_badness({ corner, F[b], f, F[a] }),
+                          quad_badness({ m_xy[cyc[a]], F[a], f, m_xy[cyc[m]] }),
+                          quad_badness({ m_xy[cyc[m]], f, F[b], m_xy[cyc[b]] }) });
+    };
+    const Point_2d target{ F[a].x + F[b].x - corner.x, F[a].y + F[b].y - corner.y };
+    Point_2d best_f = F[m];
+    double best = worst(F[m]);
+    for(double t : { 1.0, 0.75, 0.5, 0.25 }) {
+      const Point_2d f = along_2d(F[m], target, t);
+      const double w = worst(f);
+      if(w < best) { best = w; best_f = f; }
+    }
+    if(best_f.x == F[m].x && best_f.y == F[m].y) return;
+    const std::size_t id = m_first_base[c] + m;
+    F[m] = m_xy[id] = best_f;
+    m_mesh.points[id] = m_traits.construct_point_2_object()(FT(best_f.x), FT(best_f.y));
   }
 
   struct Strip_result
