@@ -1505,6 +1505,7 @@ private:
     const Point_2d target{ F[a].x + F[b].x - corner.x, F[a].y + F[b].y - corner.y };
     Point_2d best_f = F[m];
     double best = worst(F[m]);
+    if(best <= 45.0) return;
     for(double t : { 1.0, 0.75, 0.5, 0.25 }) {
       const Point_2d f = along_2d(F[m], target, t);
       const double w = worst(f);
