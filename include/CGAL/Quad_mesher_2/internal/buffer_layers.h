@@ -1202,13 +1202,24 @@ private:
       // the anchor keeps the node; at the start it must stay first, at the end nothing may
       // reach the start again
       std::size_t anchor = a == 0 ? 0 : (at_end ? n : (a + b) / 2);
-      // Around a corner wider than 225 degrees three of them (the middle ones) stay on the
-      // corner's node. The pairing can make a node the apex of one F triangle per gap it
+      // Around a corner wider than 225 degrees three of them (around the corner's bisector)
+      // stay on the corner's node. The pairing can make a node the apex of one F triangle per gap it
       // bounds: two spread nodes leave the corner two quads, over 112.5 degrees each; three F
       // points on it make a fan of three (paper Fig. 8(d)).
       std::size_t last_kept = anchor;
       if(!at_end && snap[rot(a)] != none && needs_fan_of_three(l, snap[rot(a)])) {
-        const std::size_t first_kept = a == 0 ? 0 : (std::max)(a, anchor - 1);
+        std::size_t first_kept = a == 0 ? 0 : (std::max)(a, anchor - 1);
+        // of more than three, those whose middle one lies nearest the corner's bisector
+        if(a != 0 && b - a > 2) {
+          const std::size_t k = snap[rot(a)];
+          const Point_2d C = loop_xy[k];
+          const Point_2d bis = right_bisector(loop_xy[(k + nv - 1) % nv], C, loop_xy[(k + 1) % nv]);
+          double best = HUGE_VAL;
+          for(std::size_t s = a; s + 2 <= b; ++s) {
+            const double d = dot_2d(normalized_2d(minus_2d(F[rot(s + 1)], C)), bis); // -1 on the bisector
+            if(d < best) { best = d; first_kept = s; }
+          }
+        }
         last_kept = (std::min)(b, first_kept + 2);
         anchor = first_kept;
         if(last_kept == first_kept + 2)
