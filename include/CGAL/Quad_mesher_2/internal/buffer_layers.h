@@ -1211,15 +1211,18 @@ private:
       // the anchor keeps the node; at the start it must stay first, at the end nothing may
       // reach the start again
       std::size_t anchor = a == 0 ? 0 : (at_end ? n : (a + b) / 2);
-      // Around a corner wider than 225 degrees three of them (around the corner's bisector)
-      // stay on the corner's node. The pairing can make a node the apex of one F triangle per gap it
-      // bounds: two spread nodes leave the corner two quads, over 112.5 degrees each; three F
-      // points on it make a fan of three (paper Fig. 8(d)).
+      // Around a corner wider than 225 degrees three of them stay on the corner's node. The
+      // pairing can make a node the apex of one F triangle per gap it bounds: two spread nodes
+      // leave the corner two quads, over 112.5 degrees each; three F points on it make a fan of
+      // three (paper Fig. 8(d)).
       std::size_t last_kept = anchor;
       if(!at_end && snap[rot(a)] != none && needs_fan_of_three(l, snap[rot(a)])) {
         std::size_t first_kept = a == 0 ? 0 : (std::max)(a, anchor - 1);
+        // a needle's F points wrap around its tip, so neither the bisector nor the fan's
+        // parallelogram below means much there (the 6-degree spike test: 168 degrees with them)
+        const bool needle = domain_angle(l, snap[rot(a)]) > 340.0;
         // of more than three, those whose middle one lies nearest the corner's bisector
-        if(a != 0 && b - a > 2) {
+        if(a != 0 && b - a > 2 && !needle) {
           const std::size_t k = snap[rot(a)];
           const Point_2d C = loop_xy[k];
           const Point_2d bis = right_bisector(loop_xy[(k + nv - 1) % nv], C, loop_xy[(k + 1) % nv]);
@@ -1231,7 +1234,7 @@ private:
         }
         last_kept = (std::min)(b, first_kept + 2);
         anchor = first_kept;
-        if(last_kept == first_kept + 2)
+        if(last_kept == first_kept + 2 && !needle)
           open_fan(c, rot(first_kept), rot(first_kept + 1), rot(last_kept), loop_xy[snap[rot(a)]]);
       }
       auto spacing = [&](std::size_t r1, std::size_t r2) {
@@ -1715,8 +1718,7 @@ private:
   // A corner wider than 225 degrees gets a fan of three quads. Over 270 two quads would each
   // have over 135 degrees; from 225 they would each have at least 112.5 and three quads fit
   // better (75 degrees or more each): near 270 the two quads' split is never even (the guitar's
-  // 270-degree notch gave 110 + 160), and over the 24 test runs the angles out of [45, 135]
-  // fell from 130 to 92 (240, 250 or 260 gave 94; 216, where both fans deviate alike, 99).
+  // 270-degree notch gave 110 + 160).
   bool needs_fan_of_three(std::size_t l, std::size_t k) const { return domain_angle(l, k) > 225.0; }
 
   // a loop vertex the mesh must keep: it turns the boundary by the feature angle or more
