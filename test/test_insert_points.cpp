@@ -234,6 +234,31 @@ TEST(Insert_points, isolated_points_of_a_domain_survive_the_clearance)
   EXPECT_LE(range.max, 135 + 1e-9);
 }
 
+// An isolated point nearer the boundary than its cells lost its quads in the clearance, and
+// the mesh came out without it, silently (a point 0.01 from a unit square's side: the nearest
+// vertex 0.05 away). run() now refines around it until it is a vertex inside the core, through
+// every stage (or stops with an error: a point 1e-8 from the side still fails in the buffer).
+TEST(Insert_points, isolated_points_near_the_boundary_stay_vertices)
+{
+  for(const double gap : { 0.06, 0.01, 1e-3 }) {
+    SCOPED_TRACE(gap);
+    Domain d;
+    d.points = { K::Point_2(0, 0), K::Point_2(1, 0), K::Point_2(1, 1), K::Point_2(0, 1), K::Point_2(0.5, gap),
+                 K::Point_2(1 - gap, 0.3) };
+    d.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 } };
+    for(QM::Stage last : { QM::Stage::CLEARANCE, QM::Stage::BUFFER2 }) {
+      Mesher mesher(d);
+      const Mesh mesh = mesher.run(last);
+      ASSERT_EQ(mesher.point_vertices().size(), 2u);
+      EXPECT_TRUE(mesher.lost_points().empty());
+      for(std::size_t i = 0; i < 2; ++i) {
+        ASSERT_LT(mesher.point_vertices()[i], mesh.points.size());
+        EXPECT_EQ(mesh.points[mesher.point_vertices()[i]], d.points[4 + i]);
+      }
+    }
+  }
+}
+
 } // namespace qm2_test_points
 
 namespace qm2_test_points {

@@ -144,6 +144,7 @@ public:
         m_anchored_points.push_back(m_points[i]);
       }
       m_anchors = internal::anchor_points(*m_tree, m_anchored_points, levels, names);
+      m_point_names = std::move(names);
     } else {
       m_tree->balance();
     }
@@ -195,7 +196,6 @@ public:
       }
     m_removed = { result.removed_outside, result.removed_intersecting, result.removed_near,
                   result.removed_single };
-    // the point vertices survive: isolated points lie farther inside than any removed quad
     std::vector<std::size_t> new_index(mesh.points.size(), std::size_t(-1));
     for(std::size_t q = 0; q < result.core.quads.size(); ++q)
       for(int c = 0; c < 4; ++c)
@@ -203,6 +203,17 @@ public:
     for(std::size_t& v : m_point_vertices)
       v = new_index[v];
     mesh = std::move(result.core);
+    // An isolated point too near the boundary for its cells loses its quads here, or ends on
+    // the core's boundary, which the buffer stages move: run() refines there (lost_points()).
+    m_lost_points.clear();
+    if(!m_point_vertices.empty()) {
+      std::vector<char> on_boundary(mesh.points.size(), 0);
+      for(const auto& cycle : internal::mesh_boundary_cycles(mesh.quads, mesh.points.size()))
+        for(std::size_t v : cycle) on_boundary[v] = 1;
+      for(std::size_t i = 0; i < m_point_vertices.size(); ++i)
+        if(m_point_vertices[i] == std::size_t(-1) || on_boundary[m_point_vertices[i]] != 0)
+          m_lost_points.push_back(i);
+    }
     record("clearance", start);
   }
 
@@ -230,7 +241,7 @@ public:
       layers.check_quads();
     const std::vector<std::size_t> index = layers.remove_unused_points();
     for(std::size_t& v : m_point_vertices)
-      v = index[v];
+      v = v < index.size() ? index[v] : v; // a lost point (see lost_points()) stays lost
     m_buffer_report = layers.report();
     record("buffer", start);
     return ok && m_buffer_report.invalid_quads == 0 && m_buffer_report.bad_angle_quads == 0;
@@ -260,6 +271,27 @@ public:
         insert_points(mesh);
       if(last >= Stage::CLEARANCE)
         clear_buffer_zone(mesh);
+      if(!m_lost_points.empty()) { // cells a quarter of the point's distance to the boundary
+        std::size_t added = 0;
+        for(std::size_t i : m_lost_points) {
+          const internal::Point_2d p = internal::to_point_2d(m_anchored_points[i]);
+          const double size = distance_to_boundary(p) / 2;
+          if(size > 0 && level_for_size(size / 2) <= m_tree->max_depth()) {
+            m_extra_refinement.emplace_back(p, size);
+            ++added;
+          }
+        }
+        if(added > 0 && m_rounds < max_refinement_rounds)
+          continue;
+        if(best_bad != std::size_t(-1))
+          return restore_round(std::move(best));
+        const internal::Point_2d p = internal::to_point_2d(m_anchored_points[m_lost_points.front()]);
+        std::ostringstream msg;
+        msg << "isolated point " << m_point_names[m_lost_points.front()] << " (" << p.x << ", " << p.y
+            << ") lies " << distance_to_boundary(p) << " from the boundary: cells small enough to keep it a "
+            << "vertex inside the core are beyond the quadtree's depth or its refinement rounds (" << m_rounds << ")";
+        throw Meshing_error(msg.str());
+      }
       if(last <= Stage::CLEARANCE)
         return mesh;
       fill_buffer_zone(mesh, last);
@@ -325,6 +357,9 @@ public:
 
   /// quads removed by the clearance: outside, crossing the boundary, near it, single
   const std::array<std::size_t, 4>& removed_by_clearance() const { return m_removed; }
+  /// after `clear_buffer_zone()`: the isolated points (indices into `anchored_points()`) whose
+  /// vertex the clearance removed or left on the core's boundary; `run()` refines around them
+  const std::vector<std::size_t>& lost_points() const { return m_lost_points; }
   /// the points made vertices: a point cloud's, or a domain's isolated points
   const std::vector<Point_2>& anchored_points() const { return m_anchored_points; }
 
@@ -640,6 +675,20 @@ private:
     }
   }
 
+  // in doubles: a size for refinement only
+  double distance_to_boundary(const internal::Point_2d& p) const
+  {
+    double best = HUGE_VAL;
+    for(const auto& loop : m_loops.loops)
+      for(std::size_t k = 0; k < loop.vertices.size(); ++k) {
+        const internal::Point_2d a = internal::to_point_2d(m_domain.points[loop.vertices[k]]);
+        const std::size_t next = loop.vertices[(k + 1) % loop.vertices.size()];
+        const internal::Point_2d b = internal::to_point_2d(m_domain.points[next]);
+        best = (std::min)(best, internal::point_segment_distance(p, a, b));
+      }
+    return best;
+  }
+
   void refine_to_sizing_field()
   {
     const auto& field = m_criteria.sizing_field();
@@ -684,6 +733,8 @@ private:
   std::vector<std::pair<internal::Point_2d, double>> m_extra_refinement; // (point, local size)
   internal::Buffer_report m_buffer_report;
   std::optional<Mesh_quality_2> m_quality;
+  std::vector<std::size_t> m_lost_points; // by anchored point: see clear_buffer_zone()
+  std::vector<std::size_t> m_point_names; // the input index of each anchored point
   int m_rounds = 0;
   Timings m_timings;
 };
