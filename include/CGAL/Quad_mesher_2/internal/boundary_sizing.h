@@ -67,11 +67,46 @@ public:
   // The gap at point q lying on segment `on` at arc length `arc` of its loop: the distance to
   // the nearest boundary point that is not q's neighbour along the loop, and that point; or
   // infinity if there is none within `reach`.
-  double gap(const P& q, std::size_t on, double arc, double reach, P& nearest) const
+  // The search box grows from `first_radius` (the gap at the walk's last sample, say) by
+  // fours up to `reach`: the nearest point within a box's radius is the nearest of all, and a
+  // box of the whole reach held thousands of segments per sample on long, spiky loops.
+  double gap(const P& q, std::size_t on, double arc, double reach, P& nearest,
+             double first_radius = HUGE_VAL) const
+  {
+    double best = HUGE_VAL;
+    for(double r = (std::min)(first_radius, reach);; r = (std::min)(4 * r, reach)) {
+      best = gap_within(q, on, arc, reach, r, nearest);
+      if(best <= r || r >= reach) return best;
+    }
+  }
+
+  const std::vector<Segment>& segments() const { return m_segments; }
+
+  // true if consecutive segments s, r of a loop (domain on the left) make a corner sharper
+  // than `needle_angle` inside the domain. A reflex corner's sides face each other across the
+  // outside, which the domain's cells never need to resolve.
+  static bool needle_corner(const Segment& s, const Segment& r)
+  {
+    const Segment& in = s.b == r.a ? s : r;
+    const Segment& out = s.b == r.a ? r : s;
+    const double ux = in.a[0] - in.b[0], uy = in.a[1] - in.b[1]; // from the corner back along `in`
+    const double vx = out.b[0] - out.a[0], vy = out.b[1] - out.a[1];
+    const double cross = vx * uy - vy * ux, dot = ux * vx + uy * vy;
+    return cross > 0 && std::atan2(cross, dot) < needle_angle * 3.14159265358979323846 / 180;
+  }
+
+  // the part of a corner's sides, as a share of the shorter, left to the corner quad
+  static constexpr double corner_zone = 0.125;
+  // corners sharper than this (degrees) are needles: their sides count for each other
+  static constexpr double needle_angle = 10;
+
+private:
+  // gap() within the box of radius r around q
+  double gap_within(const P& q, std::size_t on, double arc, double reach, double r, P& nearest) const
   {
     double best = HUGE_VAL;
     const Segment& here = m_segments[on];
-    m_tree.query(Bbox_2(q[0] - reach, q[1] - reach, q[0] + reach, q[1] + reach), [&](std::size_t k) {
+    m_tree.query(Bbox_2(q[0] - r, q[1] - r, q[0] + r, q[1] + r), [&](std::size_t k) {
       const Segment& s = m_segments[k];
       if(k == on)
         return;
@@ -100,27 +135,6 @@ public:
     return best;
   }
 
-  const std::vector<Segment>& segments() const { return m_segments; }
-
-  // true if consecutive segments s, r of a loop (domain on the left) make a corner sharper
-  // than `needle_angle` inside the domain. A reflex corner's sides face each other across the
-  // outside, which the domain's cells never need to resolve.
-  static bool needle_corner(const Segment& s, const Segment& r)
-  {
-    const Segment& in = s.b == r.a ? s : r;
-    const Segment& out = s.b == r.a ? r : s;
-    const double ux = in.a[0] - in.b[0], uy = in.a[1] - in.b[1]; // from the corner back along `in`
-    const double vx = out.b[0] - out.a[0], vy = out.b[1] - out.a[1];
-    const double cross = vx * uy - vy * ux, dot = ux * vx + uy * vy;
-    return cross > 0 && std::atan2(cross, dot) < needle_angle * 3.14159265358979323846 / 180;
-  }
-
-  // the part of a corner's sides, as a share of the shorter, left to the corner quad
-  static constexpr double corner_zone = 0.125;
-  // corners sharper than this (degrees) are needles: their sides count for each other
-  static constexpr double needle_angle = 10;
-
-private:
   static bool adjacent(const Segment& s, const Segment& r)
   {
     return s.a == r.a || s.a == r.b || s.b == r.a || s.b == r.b;
@@ -184,9 +198,9 @@ std::vector<Size_sample> narrow_region_samples(const Domain_2<K>& domain, const 
   // Gaps wider than this many times the local segment length leave the cells to the point
   // spacing: they cannot make a region narrow.
   const double reach_factor = 4;
-  auto add = [&](const P& q, std::size_t on, double arc) {
+  auto add = [&](const P& q, std::size_t on, double arc, double first_radius) {
     P r;
-    const double w = finder.gap(q, on, arc, reach_factor * finder.segments()[on].length, r);
+    const double w = finder.gap(q, on, arc, reach_factor * finder.segments()[on].length, r, first_radius);
     if(!std::isfinite(w))
       return w;
     const double size = w / 4;
@@ -208,10 +222,12 @@ std::vector<Size_sample> narrow_region_samples(const Domain_2<K>& domain, const 
     // walk along the segment in steps of a third of the gap just found, so that a channel
     // is sampled all along however its width varies
     const double min_step = s.length / 65536;
+    double last_gap = HUGE_VAL; // the next sample's gap is about the same: search near it first
     for(double t = 0; t < s.length;) {
       const double u = t / s.length;
       const double w = add(P{ { s.a[0] + u * (s.b[0] - s.a[0]), s.a[1] + u * (s.b[1] - s.a[1]) } }, k,
-                           s.arc_a + t);
+                           s.arc_a + t, 2 * last_gap);
+      last_gap = w;
       t += std::isfinite(w)                ? (std::max)(w / 3, min_step)
            : after_needle && t == 0 ? Boundary_gap_finder::corner_zone * s.length
                                     : s.length;
