@@ -18,6 +18,8 @@
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -269,18 +271,29 @@ int main(int argc, char** argv)
   app.add_option("--max-turning-angle", opt.max_turning_angle,
                  "with --curves spline: largest turn between neighbouring segments, degrees")
     ->check(CLI::Range(1e-3, 90.0));
+  // sizes: finite and not negative (CLI's own check let NaN through to the library, exit 1,
+  // and printed the largest double's 310 digits for inf)
+  const CLI::Validator finite_size(
+    [](std::string& text) -> std::string {
+      char* end = nullptr;
+      const double v = std::strtod(text.c_str(), &end);
+      if(end == text.c_str() || *end != '\0' || !std::isfinite(v) || v < 0)
+        return "must be a finite number, 0 or more, not '" + text + "'";
+      return std::string();
+    },
+    "FINITE NONNEGATIVE");
   app.add_option("--chord-error", opt.chord_error,
                  "with --curves spline: largest distance between a segment and its curve (0: 1e-3 "
                  "of the bounding-box diagonal)")
-    ->check(CLI::NonNegativeNumber);
+    ->check(finite_size);
   app.add_option("--max-size", opt.max_size,
                  "largest cell side (0: no bound); for a domain, of the cells meeting the bounding "
                  "box of its points")
-    ->check(CLI::NonNegativeNumber);
+    ->check(finite_size);
   app.add_option("--min-size", opt.min_size,
                  "smallest cell side (0: no bound); with --stop-after quadtree input points "
                  "closer than this may share a cell, with the points stage they are an error")
-    ->check(CLI::NonNegativeNumber);
+    ->check(finite_size);
   app.add_option("--max-depth", opt.max_depth,
                  "deepest quadtree level; a sizing that needs more is an error")
     ->check(CLI::Range(0, QM::Mesh_criteria_2<CGAL::Epick>::max_supported_depth));

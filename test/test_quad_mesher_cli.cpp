@@ -165,6 +165,11 @@ TEST(quad_mesher_cli, usage_errors)
   EXPECT_EQ(run(lake).status, 2); // no output
   EXPECT_EQ(run(lake + " -o " + m.string() + " --max-size -1").status, 2);
   EXPECT_EQ(run(lake + " -o " + m.string() + " --max-size abc").status, 2);
+  for(const char* size : { "nan", "inf", "-inf" }) { // not through to the library (exit 1 for nan)
+    const Cli_run r = run(lake + " -o " + m.string() + " --min-size " + size);
+    EXPECT_EQ(r.status, 2) << size;
+    EXPECT_LT(r.err.size(), 400u) << r.err; // no 310-digit range
+  }
   EXPECT_EQ(run(lake + " -o " + m.string() + " --no-such-option").status, 2);
   EXPECT_EQ(run("-o " + m.string()).status, 2); // no input
 }
