@@ -15,6 +15,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include "bench_run.h"
+
 #include <string>
 
 namespace {
@@ -28,20 +30,8 @@ void BM_case(benchmark::State& state, const std::string& relative)
     state.SkipWithError(error.c_str());
     return;
   }
-  std::size_t quads = 0;
-  int rounds = 0;
-  for(auto _ : state) {
-    CGAL::Quad_mesher_2::Quadtree_mesher_2<K> mesher(domain);
-    auto mesh = mesher.run(CGAL::Quad_mesher_2::Stage::BUFFER2);
-    quads = mesh.quads.size();
-    rounds = mesher.rounds();
-    benchmark::DoNotOptimize(mesh.points.data());
-  }
-  state.counters["quads"] = double(quads);
-  state.counters["rounds"] = double(rounds);
-  state.counters["ns_per_quad"] =
-    benchmark::Counter(double(quads) * state.iterations() * 1e-9,
-                       benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  run_mesher(state, CGAL::Quad_mesher_2::Stage::BUFFER2,
+             [&] { return CGAL::Quad_mesher_2::Quadtree_mesher_2<K>(domain); });
 }
 
 void BM_epick(benchmark::State& state, const std::string& c) { BM_case<CGAL::Epick>(state, c); }

@@ -15,6 +15,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include "bench_run.h"
+
 #include <cmath>
 
 namespace {
@@ -42,20 +44,7 @@ void BM_domain(benchmark::State& state, CGAL::Quad_mesher_2::Stage last)
 {
   const auto domain = disc_with_hole<K>();
   const CGAL::Quad_mesher_2::Mesh_criteria_2<K> criteria(std::ldexp(1.0, -int(state.range(0))));
-  std::size_t quads = 0;
-  int rounds = 0;
-  for(auto _ : state) {
-    CGAL::Quad_mesher_2::Quadtree_mesher_2<K> mesher(domain, criteria);
-    auto mesh = mesher.run(last);
-    quads = mesh.quads.size();
-    rounds = mesher.rounds();
-    benchmark::DoNotOptimize(mesh.points.data());
-  }
-  state.counters["quads"] = double(quads);
-  state.counters["rounds"] = double(rounds);
-  state.counters["ns_per_quad"] =
-    benchmark::Counter(double(quads) * state.iterations() * 1e-9,
-                       benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  run_mesher(state, last, [&] { return CGAL::Quad_mesher_2::Quadtree_mesher_2<K>(domain, criteria); });
 }
 
 void BM_epick(benchmark::State& state, CGAL::Quad_mesher_2::Stage last) { BM_domain<CGAL::Epick>(state, last); }

@@ -272,24 +272,21 @@ public:
       if(last >= Stage::CLEARANCE)
         clear_buffer_zone(mesh);
       if(!m_lost_points.empty()) { // cells a quarter of the point's distance to the boundary
-        std::size_t added = 0;
+        const auto locator = internal::make_loop_locator(m_domain, m_loops);
+        std::vector<std::pair<internal::Point_2d, double>> requests;
         for(std::size_t i : m_lost_points) {
           const internal::Point_2d p = internal::to_point_2d(m_anchored_points[i]);
-          const double size = distance_to_boundary(p) / 2;
-          if(size > 0 && level_for_size(size / 2) <= m_tree->max_depth()) {
-            m_extra_refinement.emplace_back(p, size);
-            ++added;
-          }
+          requests.emplace_back(p, locator->closest(p, m_tree->cell_side(m_tree->depth())).dist / 2);
         }
-        if(added > 0 && m_rounds < max_refinement_rounds)
+        if(queue_refinement(requests) > 0 && m_rounds < max_refinement_rounds)
           continue;
         if(best_bad != std::size_t(-1))
           return restore_round(std::move(best));
-        const internal::Point_2d p = internal::to_point_2d(m_anchored_points[m_lost_points.front()]);
         std::ostringstream msg;
-        msg << "isolated point " << m_point_names[m_lost_points.front()] << " (" << p.x << ", " << p.y
-            << ") lies " << distance_to_boundary(p) << " from the boundary: cells small enough to keep it a "
-            << "vertex inside the core are beyond the quadtree's depth or its refinement rounds (" << m_rounds << ")";
+        msg << "isolated point " << m_point_names[m_lost_points.front()] << " (" << requests.front().first.x
+            << ", " << requests.front().first.y << ") lies " << 2 * requests.front().second
+            << " from the boundary: cells small enough to keep it a vertex inside the core are beyond the "
+            << "quadtree's depth or its refinement rounds (" << m_rounds << ")";
         throw Meshing_error(msg.str());
       }
       if(last <= Stage::CLEARANCE)
@@ -309,13 +306,7 @@ public:
       const bool improved = valid && m_buffer_report.bad_angle_quads < best_bad;
       if(improved)
         best_bad = m_buffer_report.bad_angle_quads;
-      std::size_t added = 0;
-      for(const auto& r : requests) {
-        const double size = r.second > 0 ? r.second / 2 : 0;
-        if(size > 0 && level_for_size(size) > m_tree->max_depth()) continue;
-        m_extra_refinement.push_back(r);
-        ++added;
-      }
+      const std::size_t added = queue_refinement(requests);
       // an angle round that came out invalid is refined for validity, within the round budget;
       // a valid one that did not lower the count ends the angle rounds
       const bool more = added > 0 && m_rounds < max_refinement_rounds
@@ -675,18 +666,19 @@ private:
     }
   }
 
-  // in doubles: a size for refinement only
-  double distance_to_boundary(const internal::Point_2d& p) const
+  // Queues refinement at each request (a point and the local size there: cells of half that
+  // size, at least one level finer, see refine_at_requests()), but not below the quadtree's
+  // depth; returns how many it queued.
+  std::size_t queue_refinement(const std::vector<std::pair<internal::Point_2d, double>>& requests)
   {
-    double best = HUGE_VAL;
-    for(const auto& loop : m_loops.loops)
-      for(std::size_t k = 0; k < loop.vertices.size(); ++k) {
-        const internal::Point_2d a = internal::to_point_2d(m_domain.points[loop.vertices[k]]);
-        const std::size_t next = loop.vertices[(k + 1) % loop.vertices.size()];
-        const internal::Point_2d b = internal::to_point_2d(m_domain.points[next]);
-        best = (std::min)(best, internal::point_segment_distance(p, a, b));
-      }
-    return best;
+    std::size_t added = 0;
+    for(const auto& r : requests) {
+      const double size = r.second > 0 ? r.second / 2 : 0;
+      if(size > 0 && level_for_size(size) > m_tree->max_depth()) continue;
+      m_extra_refinement.push_back(r);
+      ++added;
+    }
+    return added;
   }
 
   void refine_to_sizing_field()

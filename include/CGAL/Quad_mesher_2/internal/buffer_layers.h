@@ -108,26 +108,25 @@ private:
 inline std::vector<std::vector<std::size_t>>
 mesh_boundary_cycles(const std::vector<std::array<std::size_t, 4>>& quads, std::size_t n_points)
 {
-  // directed edges by their source (compressed rows); edge a -> b lies on the boundary if it
-  // is the only one of a -> b and b -> a. Where several leave one vertex, the largest target
-  // wins (they cannot: see the precondition).
-  std::vector<std::size_t> offsets(n_points + 1, 0), targets(4 * quads.size());
-  for(const auto& q : quads)
-    for(std::size_t v : q) ++offsets[v + 1];
-  for(std::size_t v = 0; v < n_points; ++v) offsets[v + 1] += offsets[v];
-  {
-    std::vector<std::size_t> fill(offsets.begin(), offsets.end() - 1);
-    for(const auto& q : quads)
-      for(int e = 0; e < 4; ++e) targets[fill[q[e]]++] = q[(e + 1) % 4];
-  }
-  auto count = [&](std::size_t a, std::size_t b) {
-    return std::size_t(std::count(targets.data() + offsets[a], targets.data() + offsets[a + 1], b));
+  // edge a -> b lies on the boundary if it is the only one of a -> b and b -> a; both are
+  // edges of quads at a. Where several leave one vertex, the largest target wins (they cannot:
+  // see the precondition).
+  const Vertex_quads quads_at(quads, n_points);
+  auto position = [&](std::size_t q, std::size_t a) {
+    int c = 0;
+    while(quads[q][c] != a) ++c;
+    return c;
   };
   std::vector<std::size_t> next(n_points, std::size_t(-1));
   for(std::size_t a = 0; a < n_points; ++a)
-    for(std::size_t i = offsets[a]; i < offsets[a + 1]; ++i) {
-      const std::size_t b = targets[i];
-      if(count(a, b) + count(b, a) == 1 && (next[a] == std::size_t(-1) || b > next[a])) next[a] = b;
+    for(std::size_t q : quads_at[a]) {
+      const std::size_t b = quads[q][(position(q, a) + 1) % 4];
+      std::size_t uses = 0;
+      for(std::size_t r : quads_at[a]) {
+        const int c = position(r, a);
+        uses += (quads[r][(c + 1) % 4] == b ? 1 : 0) + (quads[r][(c + 3) % 4] == b ? 1 : 0);
+      }
+      if(uses == 1 && (next[a] == std::size_t(-1) || b > next[a])) next[a] = b;
     }
   std::vector<std::vector<std::size_t>> cycles;
   std::vector<bool> seen(n_points, false);
@@ -280,6 +279,18 @@ private:
   double m_diag = 0;
 };
 
+/// the locator of a domain's boundary loops (the box tree refers to the locator's own boxes:
+/// it stays where it is made)
+template <class K>
+std::unique_ptr<Loop_locator> make_loop_locator(const Domain_2<K>& domain, const Domain_loops_2<K>& loops)
+{
+  std::vector<std::vector<Point_2d>> pts(loops.loops.size());
+  for(std::size_t l = 0; l < loops.loops.size(); ++l)
+    for(std::size_t v : loops.loops[l].vertices)
+      pts[l].push_back(to_point_2d(domain.points[v]));
+  return std::make_unique<Loop_locator>(std::move(pts));
+}
+
 /// the angle (degrees, in [0, 360)) on the right of the path a -> b -> c, at b
 inline double right_side_angle(const Point_2d& a, const Point_2d& b, const Point_2d& c)
 {
@@ -361,11 +372,7 @@ public:
                 const Domain_loops_2<K>& loops, const K& traits)
     : m_mesh(mesh), m_size(local_size), m_domain(domain), m_loops(loops), m_traits(traits)
   {
-    std::vector<std::vector<Point_2d>> pts(loops.loops.size());
-    for(std::size_t l = 0; l < loops.loops.size(); ++l)
-      for(std::size_t v : loops.loops[l].vertices)
-        pts[l].push_back(to_point_2d(domain.points[v]));
-    m_locator = std::make_unique<Loop_locator>(std::move(pts));
+    m_locator = make_loop_locator(domain, loops);
     m_chord_tolerance = 1e-3 * m_locator->diagonal();
     m_xy.resize(mesh.points.size());
     for(std::size_t v = 0; v < mesh.points.size(); ++v)
