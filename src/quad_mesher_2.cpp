@@ -298,8 +298,8 @@ int main(int argc, char** argv)
                  "deepest quadtree level; a sizing that needs more is an error")
     ->check(CLI::Range(0, QM::Mesh_criteria_2<CGAL::Epick>::max_supported_depth));
   app.add_option("--max-cells", opt.max_cells,
-                 "most quadtree cells to make before stopping with an error (a memory guard: "
-                 "about 250 bytes each)")
+                 "the cell budget: most quadtree cells to make before stopping with an error (a memory guard: "
+                 "the quadtree takes about 110 bytes a cell)")
     ->check(CLI::PositiveNumber);
   app.add_flag("-v,--verbose", opt.verbose, "print what each stage did and its time");
   try {

@@ -197,6 +197,38 @@ TEST(MeshQuality2, TJunctionHangingNode)
   EXPECT_TRUE(q_ok.is_valid());
 }
 
+// The search bins edges in a grid sized by the mean edge length: a graded mesh (here a fine
+// 60x60 block of cells 1e-4 wide beside the T-junction) makes the grid fine and the
+// T-junction's edges cross many of its cells. At every slope, steep or not, either way round,
+// the hanging node is found, and the conforming version has none.
+TEST(MeshQuality2, TJunctionHangingNodeAtEverySlopeBesideFineCells)
+{
+  using namespace qm2_test_quality;
+  const std::vector<std::pair<double, double>> t_xy = {{0, 0}, {1, 0}, {1, 2}, {0, 2}, {2, 0}, {2, 1}, {1, 1}, {2, 2}};
+  const std::vector<std::array<std::size_t, 4>> t_quads = {{0, 1, 2, 3}, {1, 4, 5, 6}, {6, 5, 7, 2}};
+  const std::vector<std::pair<double, double>> ok_xy = {{0, 0}, {1, 0}, {1, 2}, {0, 2}, {2, 0}, {2, 1}, {1, 1}, {2, 2}, {0, 1}};
+  const std::vector<std::array<std::size_t, 4>> ok_quads = {{0, 1, 6, 8}, {8, 6, 2, 3}, {1, 4, 5, 6}, {6, 5, 7, 2}};
+  auto with_fine_block = [](std::vector<std::pair<double, double>> xy, std::vector<std::array<std::size_t, 4>> quads, double degrees) {
+    const double a = degrees * 3.14159265358979323846 / 180, c = std::cos(a), s = std::sin(a);
+    for(auto& p : xy) p = { c * p.first - s * p.second, s * p.first + c * p.second };
+    const std::size_t n = 60, base = xy.size();
+    for(std::size_t j = 0; j <= n; ++j)
+      for(std::size_t i = 0; i <= n; ++i)
+        xy.push_back({ 5 + 1e-4 * double(i), 5 + 1e-4 * double(j) });
+    for(std::size_t j = 0; j < n; ++j)
+      for(std::size_t i = 0; i < n; ++i) {
+        const std::size_t v = base + j * (n + 1) + i;
+        quads.push_back({ v, v + 1, v + n + 2, v + n + 1 });
+      }
+    return make_mesh(xy, quads);
+  };
+  for(double degrees = 0; degrees < 360; degrees += 7.5) {
+    SCOPED_TRACE(degrees);
+    EXPECT_EQ(compute_quality(with_fine_block(t_xy, t_quads, degrees)).number_of_hanging_nodes, 1u);
+    EXPECT_EQ(compute_quality(with_fine_block(ok_xy, ok_quads, degrees)).number_of_hanging_nodes, 0u);
+  }
+}
+
 TEST(MeshQuality2, DuplicateVertices)
 {
   using namespace qm2_test_quality;

@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 namespace qm2_test_mesher {
@@ -131,6 +132,52 @@ TEST(Quadtree_mesher_2, errors_name_the_points)
   EXPECT_THROW(Criteria(std::nan("")), QM::Meshing_error);
   EXPECT_THROW(Criteria(1, 2), QM::Meshing_error);
   EXPECT_THROW(Criteria(0, 0, 41), QM::Meshing_error); // beyond max_supported_depth (40)
+}
+
+// The cell budget is a memory guard: it must stop a sizing that asks too much early, and say
+// where. A maximum size is refused before any cell is made (the count is known); a narrow
+// region 1e-5 wide is stopped where it ran out, and the message names the place.
+TEST(Quadtree_mesher_2, cell_budget_errors_come_early_and_name_the_place)
+{
+  Domain square;
+  square.points = { K::Point_2(0, 0), K::Point_2(10, 0), K::Point_2(10, 10), K::Point_2(0, 10) };
+  square.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 } };
+  Criteria fine(1e-3); // 10^8 cells of side 1e-3
+  fine.set_max_cells(1000000);
+  Mesher uniform(square, fine);
+  try {
+    uniform.run(QM::Stage::QUADTREE);
+    FAIL();
+  } catch(const QM::Meshing_error& e) {
+    EXPECT_NE(std::string(e.what()).find("the maximum size 0.001 needs about"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("cell budget of 1000000"), std::string::npos) << e.what();
+  }
+  EXPECT_LT(uniform.quadtree().number_of_leaves(), 100u) << "cells were made before the refusal";
+  EXPECT_EQ(Criteria().max_cells(), std::size_t(1) << 23);
+
+  Domain gap = square; // two square holes 1e-5 apart
+  for(double x0 : { 2.0, 4.00001 }) {
+    const std::size_t b = gap.points.size();
+    gap.points.insert(gap.points.end(), { K::Point_2(x0, 4), K::Point_2(x0 + 2, 4), K::Point_2(x0 + 2, 2), K::Point_2(x0, 2) });
+    for(std::size_t k = 0; k < 4; ++k) gap.segments.push_back({ b + k, b + (k + 1) % 4 });
+  }
+  gap.holes = { K::Point_2(3, 3), K::Point_2(5, 3) };
+  Criteria budget;
+  budget.set_max_cells(200000);
+  try {
+    Mesher(gap, budget).run(QM::Stage::QUADTREE);
+    FAIL();
+  } catch(const QM::Meshing_error& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("more than 200000 quadtree cells"), std::string::npos) << m;
+    const std::size_t at = m.find("near (");
+    ASSERT_NE(at, std::string::npos) << m;
+    double x = 0, y = 0;
+    ASSERT_EQ(std::sscanf(m.c_str() + at, "near (%lf, %lf)", &x, &y), 2) << m;
+    EXPECT_NEAR(x, 4, 0.01) << m;
+    EXPECT_GE(y, 2 - 0.01) << m;
+    EXPECT_LE(y, 4 + 0.01) << m;
+  }
 }
 
 TEST(Quadtree_mesher_2, user_sizing_field)

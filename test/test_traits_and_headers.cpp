@@ -17,6 +17,7 @@
 #include <fstream>
 #include <regex>
 #include <sstream>
+#include <type_traits>
 
 namespace qm2_test_traits {
 
@@ -99,6 +100,16 @@ TEST(QuadMesherTraits_2, archetype_is_enough_for_the_mesher)
   CGAL::Quad_mesher_2::Quadtree_mesher_2<Archetype_traits> domain_mesher(square, criteria);
   EXPECT_TRUE(qm2_checks::is_conforming(domain_mesher.run(CGAL::Quad_mesher_2::Stage::CLEARANCE)));
   EXPECT_EQ(domain_mesher.loops().loops.size(), 1u);
+}
+
+// The mesher keeps a reference to its domain: a temporary one must not compile.
+TEST(QuadMesherTraits_2, mesher_refuses_a_temporary_domain)
+{
+  typedef CGAL::Quad_mesher_2::Quadtree_mesher_2<qm2_test::K> Mesher;
+  typedef CGAL::Quad_mesher_2::Domain_2<qm2_test::K> Domain;
+  static_assert(std::is_constructible<Mesher, const Domain&>::value, "a named domain is taken");
+  static_assert(!std::is_constructible<Mesher, Domain&&>::value, "a temporary domain is refused");
+  SUCCEED();
 }
 
 TEST(Header_hygiene, include_guards_spell_their_paths)

@@ -49,9 +49,10 @@ public:
   /// Builds a tree of root cells only, covering `bbox` with a margin, able to refine down to
   /// `max_depth` (cells of side `root_side/2^max_depth`; templates add half of that), at most
   /// `max_supported_depth` (40), or less where doubles cannot hold that lattice exactly (see
-  /// `depth_limit()`).
+  /// `depth_limit()`). Cells of side below `finest_side` are refused too: a mesher passes the
+  /// size below which its mesh's vertices could no longer be told apart.
   Balanced_quadtree_2(const Iso_rectangle_2& bbox, int max_depth = 20,
-                      const GeomTraits& traits = GeomTraits())
+                      const GeomTraits& traits = GeomTraits(), double finest_side = 0)
     : m_traits(traits), m_max_depth(max_depth)
   {
     if(max_depth < 0 || max_depth > max_supported_depth)
@@ -61,7 +62,7 @@ public:
     auto ymin = CGAL::to_interval(m_traits.compute_ymin_2_object()(bbox));
     auto xmax = CGAL::to_interval(m_traits.compute_xmax_2_object()(bbox));
     auto ymax = CGAL::to_interval(m_traits.compute_ymax_2_object()(bbox));
-    setup_root(xmin.first, ymin.first, xmax.second, ymax.second);
+    setup_root(xmin.first, ymin.first, xmax.second, ymax.second, finest_side);
   }
 
   /// \name Root grid and lattice
@@ -182,9 +183,11 @@ public:
       throw Meshing_error(depth_message(k));
     if(m_number_of_leaves + 3 > m_max_leaves) {
       std::ostringstream msg;
+      // where it ran out tells the user which feature asks for so many cells
       msg << "the mesh would need more than " << m_max_leaves
-          << " quadtree cells; coarsen the sizing (maximum size, minimum size) or raise the "
-             "cell budget";
+          << " quadtree cells (it ran out splitting a cell of side " << cell_side(k.level)
+          << " near (" << lattice_x(k.level, k.i) << ", " << lattice_y(k.level, k.j)
+          << ")); coarsen the sizing (maximum size, minimum size) or raise the cell budget";
       throw Meshing_error(msg.str());
     }
     *v = SPLIT;
@@ -355,7 +358,7 @@ private:
       m_unbalanced.push_back(k);
   }
 
-  void setup_root(double xmin, double ymin, double xmax, double ymax)
+  void setup_root(double xmin, double ymin, double xmax, double ymax, double finest_side)
   {
     if(!(std::isfinite(xmin) && std::isfinite(ymin) && std::isfinite(xmax) && std::isfinite(ymax))
        || xmin > xmax || ymin > ymax)
@@ -397,6 +400,17 @@ private:
           << " (quadtree depth " << exact_depth << ")";
       m_depth_limit = msg.str();
       m_max_depth = exact_depth;
+    }
+    int resolved_depth = m_max_depth;
+    while(resolved_depth > 0 && std::ldexp(m_root_side, -resolved_depth) < finest_side)
+      --resolved_depth;
+    if(resolved_depth < m_max_depth) {
+      std::ostringstream msg;
+      msg << "cells below " << std::ldexp(m_root_side, -resolved_depth) << " are too small to tell "
+          << "their vertices apart in an input " << extent << " across (quadtree depth "
+          << resolved_depth << ")";
+      m_depth_limit = msg.str();
+      m_max_depth = resolved_depth;
     }
     // The origin lies on the vertex lattice of level min(max_depth, 24) + 1, which the deeper
     // lattices contain: the grid of an input that needed at most the 24 levels of earlier

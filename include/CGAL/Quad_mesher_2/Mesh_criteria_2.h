@@ -70,7 +70,9 @@ public:
   bool resolve_narrow_regions() const { return m_resolve_narrow_regions; }
   void set_resolve_narrow_regions(bool b) { m_resolve_narrow_regions = b; }
   /// the most quadtree leaves a mesher may make before it stops with `Meshing_error`: a guard
-  /// against exhausting memory (about 250 bytes per leaf with Epick)
+  /// against exhausting memory (about 120 bytes per leaf with Epick at the peak; the default,
+  /// 2^23, is about 1 GB and is reached within seconds, while the largest shared domain needs
+  /// under 10^6 leaves)
   std::size_t max_cells() const { return m_max_cells; }
   void set_max_cells(std::size_t n) { m_max_cells = n; }
   const Sizing_field& sizing_field() const { return m_sizing_field; }
@@ -108,7 +110,7 @@ private:
   bool m_use_point_spacing = true;
   bool m_points_as_vertices = true;
   bool m_resolve_narrow_regions = true;
-  std::size_t m_max_cells = std::size_t(1) << 25;
+  std::size_t m_max_cells = std::size_t(1) << 23;
   Sizing_field m_sizing_field;
 };
 

@@ -88,6 +88,10 @@ public:
                     const GeomTraits& traits = GeomTraits())
     : m_domain(domain), m_criteria(criteria), m_traits(traits)
   {}
+  /// A temporary domain would not outlive the mesher.
+  Quadtree_mesher_2(Domain_2<GeomTraits>&& domain,
+                    const Mesh_criteria_2<GeomTraits>& criteria = Mesh_criteria_2<GeomTraits>(),
+                    const GeomTraits& traits = GeomTraits()) = delete;
 
   /// Stage 1: merges duplicate input points, refines the quadtree by the criteria (and, with
   /// `points_as_vertices()`, around every input point), then strongly balances it.
@@ -105,7 +109,13 @@ public:
                          CGAL::to_double(m_traits.compute_ymin_2_object()(box)),
                          CGAL::to_double(m_traits.compute_xmax_2_object()(box)),
                          CGAL::to_double(m_traits.compute_ymax_2_object()(box)));
-    m_tree = std::make_unique<Quadtree>(bounding_box(box), m_criteria.max_depth(), m_traits);
+    // the whole-mesh check counts vertices closer than 1e-9 of the diagonal as duplicates, and
+    // the buffer puts vertices a quarter cell apart: finer cells make a mesh that cannot pass
+    // (a point cloud has no buffer, and its points are its finest vertices)
+    const double finest_side = m_domain.is_point_cloud()
+                                 ? 0.0
+                                 : 4e-9 * std::hypot(m_box.xmax() - m_box.xmin(), m_box.ymax() - m_box.ymin());
+    m_tree = std::make_unique<Quadtree>(bounding_box(box), m_criteria.max_depth(), m_traits, finest_side);
     m_tree->set_max_leaves(m_criteria.max_cells());
     compute_point_spacing();
     refine_to_max_size();
@@ -555,6 +565,23 @@ private:
       std::ostringstream msg;
       msg << "the maximum size " << m_criteria.max_size() << " needs quadtree depth " << level
           << ", beyond " << m_tree->depth_limit();
+      throw Meshing_error(msg.str());
+    }
+    // the cells it asks for are known before any is made: a budget error now, not after
+    // minutes and gigabytes
+    const double side = m_tree->cell_side(level);
+    auto cells_across = [&](double lo, double hi, double origin, std::uint64_t all) {
+      if(m_domain.is_point_cloud())
+        return double(all);
+      return std::floor((hi - origin) / side) - std::floor((lo - origin) / side) + 1;
+    };
+    const double cells = cells_across(m_box.xmin(), m_box.xmax(), m_tree->lattice_x(0, 0), m_tree->cells_x(level))
+                         * cells_across(m_box.ymin(), m_box.ymax(), m_tree->lattice_y(0, 0), m_tree->cells_y(level));
+    if(cells > double(m_criteria.max_cells())) {
+      std::ostringstream msg;
+      msg << "the maximum size " << m_criteria.max_size() << " needs about " << cells
+          << " quadtree cells over the domain, more than the cell budget of " << m_criteria.max_cells()
+          << "; coarsen it or raise the cell budget";
       throw Meshing_error(msg.str());
     }
     m_tree->refine([&](const Cell_key& k) { return k.level < level && !outside_domain_box(k); });

@@ -693,7 +693,13 @@ public:
         return worst < o.worst - 1e-9;
       }
     };
-    const double min_edge = 1e-8 * m_locator->diagonal();
+    // above the whole-mesh check's merge distance (1e-9 of the diagonal), and well below the
+    // edges of the finest cells, so that a domain's smallest features keep room to move
+    double finest = HUGE_VAL;
+    for(double h : m_size)
+      if(h > 0) finest = (std::min)(finest, h);
+    const double min_edge = (std::max)(2e-9 * m_locator->diagonal(),
+                                       (std::min)(1e-8 * m_locator->diagonal(), finest / 4));
     const double min_edge2 = min_edge * min_edge;
     // With `bound`, the caller keeps the result only if it is below *bound: every quad only adds
     // to the cost, so the sum stops as soon as it cannot be (same decisions, far fewer quads).
