@@ -270,7 +270,7 @@ int main(int argc, char** argv)
     ->check(CLI::IsMember({ "polygon", "spline" }));
   app.add_option("--max-turning-angle", opt.max_turning_angle,
                  "with --curves spline: largest turn between neighbouring segments, degrees")
-    ->check(CLI::Range(1e-3, 90.0));
+    ->check(CLI::Range(0.1, 90.0)); // finer gives millions of boundary vertices on a circle
   // sizes: finite and not negative (CLI's own check let NaN through to the library, exit 1,
   // and printed the largest double's 310 digits for inf)
   const CLI::Validator finite_size(

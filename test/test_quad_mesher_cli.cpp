@@ -165,6 +165,7 @@ TEST(quad_mesher_cli, usage_errors)
   EXPECT_EQ(run(lake).status, 2); // no output
   EXPECT_EQ(run(lake + " -o " + m.string() + " --max-size -1").status, 2);
   EXPECT_EQ(run(lake + " -o " + m.string() + " --max-size abc").status, 2);
+  EXPECT_EQ(run(lake + " -o " + m.string() + " --curves spline --max-turning-angle 0.01").status, 2); // below 0.1
   for(const char* size : { "nan", "inf", "-inf" }) { // not through to the library (exit 1 for nan)
     const Cli_run r = run(lake + " -o " + m.string() + " --min-size " + size);
     EXPECT_EQ(r.status, 2) << size;
