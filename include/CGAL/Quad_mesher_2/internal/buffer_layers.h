@@ -220,7 +220,12 @@ public:
       m_tree->query(Bbox_2(p.x - r, p.y - r, p.x + r, p.y + r), [&](std::size_t s) {
         if(l != none && (m_edge_of[s][0] != l) != other_than) return;
         Hit h = on_edge(p, m_edge_of[s][0], m_edge_of[s][1]);
-        if(h.dist < best.dist) best = h;
+        // equally near edges (a point on a symmetry axis) by their index, not by rounding:
+        // the same choice on a scaled or moved domain
+        const double tie = 1e-9 * m_diag;
+        if(h.dist < best.dist - tie
+           || (h.dist <= best.dist + tie && std::make_pair(h.loop, h.edge) < std::make_pair(best.loop, best.edge)))
+          best = h;
       });
       if(best.dist <= r || r > 4 * m_diag + 1e-300) return best;
       r *= 4;
@@ -523,14 +528,14 @@ public:
       {
         if(invalid != o.invalid) return invalid < o.invalid;
         if(out != o.out) return out < o.out;
-        if(worst < o.worst - 1e-9) return true;
-        if(worst > o.worst + 1e-9) return false;
-        return sum < o.sum - 1e-9;
+        if(worst < o.worst - angle_tolerance) return true;
+        if(worst > o.worst + angle_tolerance) return false;
+        return sum < o.sum - angle_tolerance * (1 + o.sum);
       }
       void add(double b)
       {
         if(b >= 1000.0) ++invalid;
-        else if(b > 45.0 + 1e-9) ++out;
+        else if(b > 45.0 + angle_tolerance) ++out;
         worst = (std::max)(worst, b);
         sum += b * b;
       }
@@ -613,7 +618,7 @@ public:
         for(int c = 0; c < 4; ++c)
           if(forced_angle(Q[c], a[c])) lo = (std::min)(lo, input_corner_angle(Q[c]));
         for(int c = 0; c < 4; ++c)
-          if((a[c] < lo - 1e-9 || a[c] > 180.0 - lo + 1e-9) && !forced_angle(Q[c], a[c]))
+          if((a[c] < lo - angle_tolerance || a[c] > 180.0 - lo + angle_tolerance) && !forced_angle(Q[c], a[c]))
             bad_angle = true;
       }
       if(!valid) ++m_report.invalid_quads;
@@ -690,7 +695,7 @@ public:
       {
         if(invalid != o.invalid) return invalid < o.invalid;
         if(out != o.out) return out < o.out;
-        return worst < o.worst - 1e-9;
+        return worst < o.worst - angle_tolerance;
       }
     };
     const double min_edge = 1e-8 * m_locator->diagonal();
@@ -703,7 +708,7 @@ public:
         const double b = cost(m_mesh.quads[q]);
         r.worst = (std::max)(r.worst, b);
         if(b >= 1000.0) ++r.invalid;
-        else if(b > 45.0 + 1e-9) ++r.out;
+        else if(b > 45.0 + angle_tolerance) ++r.out;
         const Quad& Q = m_mesh.quads[q];
         int c = 0;
         while(Q[c] != v) ++c;
@@ -804,7 +809,7 @@ public:
     std::vector<std::size_t> near_bad;
     for(const Quad& q : m_mesh.quads) {
       const double b = made_or_changed(q) ? cost(q) : 0.0;
-      if(b > 45.0 + 1e-9 && b < 1000.0) near_bad.insert(near_bad.end(), q.begin(), q.end());
+      if(b > 45.0 + angle_tolerance && b < 1000.0) near_bad.insert(near_bad.end(), q.begin(), q.end());
     }
     near_bad = ring(ring(near_bad));
     std::vector<char> fixed(m_mesh.points.size(), 0);
@@ -906,6 +911,10 @@ private:
   }
 
   static constexpr std::size_t none = std::size_t(-1);
+  // Angles within this many degrees of a bound count as on it, and closer ones as equal:
+  // doubles hold an angle only to about 1e-8 degrees where the coordinates are 2^20 cell
+  // sides, and a choice made by rounding differs on a scaled or moved domain
+  static constexpr double angle_tolerance = 1e-6;
 
   // for a sliding boundary point, moves `p` onto its edge strictly between its neighbours;
   // false if there is no room
