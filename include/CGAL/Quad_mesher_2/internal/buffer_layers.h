@@ -1163,6 +1163,12 @@ private:
         if(best != none) { snap[best] = k; vertex_taken[k] = true; }
       }
     }
+    for(std::size_t i = 0; i < n; ++i) {
+      const std::size_t k = snap[i];
+      if(k != none && is_feature(l, k) && domain_angle(l, k) > 135.0 && !needs_fan_of_three(l, k)
+         && snap[(i + n - 1) % n] != k && snap[(i + 1) % n] != k)
+        turn_to_bisector(c, i, k);
+    }
     std::size_t s0 = 0;
     while(s0 < n && snap[s0] != none) ++s0;
     if(s0 == n) { s0 = 0; snap[0] = none; }
@@ -1549,6 +1555,47 @@ private:
       const Point_2d f = along_2d(F[m], target, t);
       const double w = worst(f);
       if(w < best) { best = w; best_f = f; }
+    }
+    if(best_f.x == F[m].x && best_f.y == F[m].y) return;
+    const std::size_t id = m_first_base[c] + m;
+    F[m] = m_xy[id] = best_f;
+    m_mesh.points[id] = m_traits.construct_point_2_object()(FT(best_f.x), FT(best_f.y));
+  }
+
+  // An obtuse corner (135 to 225 degrees) whose node took one first buffer point F is split
+  // by the edge from it to F (paper Fig. 8(c): that point lies on the corner's bisector). F
+  // comes from a core vertex that need not face the corner, and an uneven split leaves the
+  // pairing one quad over the whole corner (a 136-degree sector whose core came to a point
+  // before it: 39 + 97 degrees, then one quad of 136). F moves towards the bisector, at its
+  // distance from the corner, while that lowers the worst of the two halves' and its two
+  // first-layer quads' deviation from 90 degrees.
+  void turn_to_bisector(std::size_t c, std::size_t m, std::size_t k)
+  {
+    const auto& cyc = m_cycles[c];
+    auto& F = m_first[c];
+    const std::size_t n = cyc.size(), a = (m + n - 1) % n, b = (m + 1) % n;
+    const auto& xy = m_locator->loop(m_cycle_loop[c]);
+    const std::size_t nv = xy.size();
+    const Point_2d& prev = xy[(k + nv - 1) % nv];
+    const Point_2d& corner = xy[k];
+    const Point_2d& next = xy[(k + 1) % nv];
+    const double alpha = domain_angle(m_cycle_loop[c], k);
+    auto worst = [&](const Point_2d& f) {
+      const double half = 360.0 - right_side_angle(prev, corner, f); // the domain on the left
+      return (std::max)({ std::abs(90.0 - half), std::abs(90.0 - (alpha - half)),
+                          quad_badness({ m_xy[cyc[a]], F[a], f, m_xy[cyc[m]] }),
+                          quad_badness({ m_xy[cyc[m]], f, F[b], m_xy[cyc[b]] }) });
+    };
+    double best = worst(F[m]);
+    if(best <= 45.0) return;
+    const Point_2d bis = right_bisector(prev, corner, next); // out of the domain
+    const double r = length_2d(minus_2d(F[m], corner));
+    const Point_2d target{ corner.x - r * bis.x, corner.y - r * bis.y };
+    Point_2d best_f = F[m];
+    for(double t : { 1.0, 0.75, 0.5, 0.25 }) {
+      const Point_2d f = along_2d(F[m], target, t);
+      const double w = worst(f);
+      if(w < best - angle_tolerance) { best = w; best_f = f; }
     }
     if(best_f.x == F[m].x && best_f.y == F[m].y) return;
     const std::size_t id = m_first_base[c] + m;
