@@ -195,6 +195,7 @@ int run(const Options& opt)
     const auto& b = mesher.buffer_report();
     report["buffer"] = { { "refinement_rounds", mesher.rounds() - 1 },
                          { "notches_moved", b.moved_notches },
+                         { "corners_cut", b.cut_corners },
                          { "first_layer_quads", b.first_layer_quads },
                          { "second_layer_quads", b.second_layer_quads },
                          { "quads_outside_45_135_not_forced", b.bad_angle_quads } };
@@ -258,7 +259,7 @@ int main(int argc, char** argv)
                  "default for point clouds) also moves a vertex onto every point of a point cloud, or every "
                  "isolated point of a domain (paper §3, Lemma 1); 'clearance' (domains only) "
                  "keeps the core mesh clear of the boundary (paper §4.3, Fig. 3(c)); 'templates' opens the "
-                 "core's notches (§4.4); 'buffer1' adds the first buffer layer (§4.5); 'buffer2' "
+                 "core's notches and cuts its corners (§4.4); 'buffer1' adds the first buffer layer (§4.5); 'buffer2' "
                  "(the default for domains) the second, reaching the boundary (§4.6)")
     ->check(CLI::IsMember(stage_names()));
   app.add_flag("--merge-duplicates", opt.merge_duplicates,

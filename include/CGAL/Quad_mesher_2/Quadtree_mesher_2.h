@@ -44,8 +44,8 @@ enum class Stage
             ///< mesh vertex (paper §3, Lemma 1)
   CLEARANCE, ///< domains only: quads outside, crossing or too near the boundary removed, leaving
              ///< the core mesh and an empty buffer zone (paper §4.3, Fig. 3(c))
-  TEMPLATES, ///< domains only: notches of the core boundary opened so that every boundary angle
-             ///< is at least 112.5° where the core allows (paper §4.4)
+  TEMPLATES, ///< domains only: notches of the core boundary opened and its convex corners cut so
+             ///< that every boundary angle is in [112.5°, 225°] where the core allows (paper §4.4)
   BUFFER1,   ///< domains only: the first buffer layer, on angle bisectors (paper §4.5)
   BUFFER2    ///< domains only: the second buffer layer, reaching the boundary; the whole domain
              ///< is meshed and every boundary vertex is a mesh vertex (paper §4.6)
@@ -228,10 +228,10 @@ public:
   }
 
   /// Stages 4 to 6 (domains only, paper §4.4-§4.6) on `mesh`, the result of
-  /// `clear_buffer_zone()`, up to `last`: opens the core's notches, then adds the first buffer
-  /// layer and the second, which reaches the boundary. Returns `false` if the quadtree should
-  /// be finer somewhere (see `refinement_requests()`): a buffer quad would be invalid, or have
-  /// an angle outside [45°, 135°] that no input corner forces.
+  /// `clear_buffer_zone()`, up to `last`: opens the core's notches and cuts its corners, then
+  /// adds the first buffer layer and the second, which reaches the boundary. Returns `false`
+  /// if the quadtree should be finer somewhere (see `refinement_requests()`): a buffer quad
+  /// would be invalid, or have an angle outside [45°, 135°] that no input corner forces.
   bool fill_buffer_zone(Mesh& mesh, Stage last = Stage::BUFFER2)
   {
     CGAL_precondition(m_tree != nullptr && !m_domain.is_point_cloud());
@@ -239,7 +239,7 @@ public:
     internal::Buffer_layers<GeomTraits> layers(mesh, m_core_vertex_size, m_domain, m_loops, m_traits);
     bool ok = layers.match_loops();
     if(ok && last >= Stage::TEMPLATES)
-      layers.relax_notches();
+      layers.apply_boundary_templates();
     if(ok && last >= Stage::BUFFER1)
       layers.build_first_layer();
     if(ok && last >= Stage::BUFFER2)

@@ -13,12 +13,19 @@
 //
 // 1. Core loops are matched one to one with the domain's loops (each core loop to the loop
 //    nearest most of its vertices; the orientation must agree).
-// 2. Boundary templates (§4.4): a core boundary vertex B whose buffer-side angle beta is below
-//    112.5° (45° or 90° on the quadtree lattice: a notch of the core) is moved along the bisector
-//    of beta into the buffer by 0.71, 0.5 or 0.35 h(B) -- the first that keeps every core angle
-//    at B in [45°, 135°], raises the smallest buffer-side angle at B and its two neighbours and
-//    keeps B and its boundary edges at least h(B)/4 from the boundary. On a uniform staircase
-//    the moved notches fall on the line through the convex corners: every beta becomes 180°.
+// 2. Boundary templates (§4.4): Lemma 2 asks every buffer-side angle beta of the core boundary
+//    to lie in [112.5°, 225°]. A vertex B out of it moves along the bisector of beta, e being
+//    the mean length of its two boundary edges: a notch (beta below 112.5°) out into the buffer
+//    by 0.71, 0.5 or 0.35 e (Template 1(a): a lattice notch opens to 180°), a convex corner
+//    (beta above 225°) in by 0.41, 0.3 or 0.2 e (Template 1(b): a lattice corner's quad becomes
+//    a kite, beta 225° at B and 202.5° at its neighbours). Of the steps that keep every core
+//    angle at B in [45°, 135°] and B's boundary edges h(B)/4 from the boundary, the one that
+//    most lowers the worst distance of the three betas at B and its neighbours from
+//    [112.5°, 225°] is taken. In the paper's order of priority (Table 2): first the vertices
+//    whose quads are not squares of one size (the adaptive templates), then the corners, then
+//    the notches; last, a vertex within range moves either way if a neighbour is still out.
+//    On a 45° staircase the corners cut first leave 225° and 135°; notches opened first would
+//    flatten the corners between them, and every other notch stayed at 90°.
 // 3. First buffer layer (§4.5): B's first buffer point F lies halfway (in distance to the
 //    boundary) between B and the boundary, along the mean of the bisector of beta and the
 //    direction to the nearest boundary point; each F then moves alone to improve its two
@@ -220,7 +227,12 @@ public:
       m_tree->query(Bbox_2(p.x - r, p.y - r, p.x + r, p.y + r), [&](std::size_t s) {
         if(l != none && (m_edge_of[s][0] != l) != other_than) return;
         Hit h = on_edge(p, m_edge_of[s][0], m_edge_of[s][1]);
-        if(h.dist < best.dist) best = h;
+        // equally near edges (a point on a symmetry axis) by their index, not by rounding:
+        // the same choice on a scaled or moved domain
+        const double tie = 1e-9 * m_diag;
+        if(h.dist < best.dist - tie
+           || (h.dist <= best.dist + tie && std::make_pair(h.loop, h.edge) < std::make_pair(best.loop, best.edge)))
+          best = h;
       });
       if(best.dist <= r || r > 4 * m_diag + 1e-300) return best;
       r *= 4;
@@ -344,7 +356,9 @@ inline double quad_badness(const std::array<Point_2d, 4>& q)
 /// what the buffer construction did, and where the quadtree should be finer
 struct Buffer_report
 {
+  /// core boundary vertices moved out into the buffer (notches opened), and in (corners cut)
   std::size_t moved_notches = 0;
+  std::size_t cut_corners = 0;
   std::size_t first_layer_quads = 0;
   std::size_t second_layer_quads = 0;
   std::size_t invalid_quads = 0;
@@ -428,21 +442,28 @@ public:
     return ok;
   }
 
-  /// Stage "templates": moves the core's notch vertices into the buffer (see the file comment).
-  void relax_notches()
+  /// Stage "templates": moves core boundary vertices so that their buffer-side angles meet
+  /// Lemma 2 where the core allows (see the file comment).
+  void apply_boundary_templates()
   {
     const Vertex_quads quads_at(m_mesh.quads, m_mesh.points.size());
-    for(int pass = 0; pass < 3; ++pass) {
-      bool changed = false;
-      for(const auto& cyc : m_cycles) {
-        const std::size_t n = cyc.size();
-        for(std::size_t i = 0; i < n; ++i)
-          if(try_move_notch(cyc[(i + n - 2) % n], cyc[(i + n - 1) % n], cyc[i], cyc[(i + 1) % n],
-                            cyc[(i + 2) % n], quads_at))
-            changed = true;
+    std::vector<char> adaptive(m_mesh.points.size(), 0);
+    for(const auto& cyc : m_cycles)
+      for(std::size_t b : cyc)
+        adaptive[b] = !on_square_lattice(b, quads_at);
+    for(Template_pass pass : { ADAPTIVE, CORNERS, NOTCHES, NEIGHBOURS })
+      for(int round = 0; round < 3; ++round) {
+        bool changed = false;
+        for(const auto& cyc : m_cycles) {
+          const std::size_t n = cyc.size();
+          for(std::size_t i = 0; i < n; ++i)
+            if((pass != ADAPTIVE || adaptive[cyc[i]])
+               && try_move_boundary_vertex(cyc[(i + n - 2) % n], cyc[(i + n - 1) % n], cyc[i],
+                                           cyc[(i + 1) % n], cyc[(i + 2) % n], pass, quads_at))
+              changed = true;
+        }
+        if(!changed) break;
       }
-      if(!changed) break;
-    }
   }
 
   /// Stage "buffer1": the first buffer points and the quads B_i F_i F_{i+1} B_{i+1}.
@@ -523,14 +544,14 @@ public:
       {
         if(invalid != o.invalid) return invalid < o.invalid;
         if(out != o.out) return out < o.out;
-        if(worst < o.worst - 1e-9) return true;
-        if(worst > o.worst + 1e-9) return false;
-        return sum < o.sum - 1e-9;
+        if(worst < o.worst - angle_tolerance) return true;
+        if(worst > o.worst + angle_tolerance) return false;
+        return sum < o.sum - angle_tolerance * (1 + o.sum);
       }
       void add(double b)
       {
         if(b >= 1000.0) ++invalid;
-        else if(b > 45.0 + 1e-9) ++out;
+        else if(b > 45.0 + angle_tolerance) ++out;
         worst = (std::max)(worst, b);
         sum += b * b;
       }
@@ -613,7 +634,7 @@ public:
         for(int c = 0; c < 4; ++c)
           if(forced_angle(Q[c], a[c])) lo = (std::min)(lo, input_corner_angle(Q[c]));
         for(int c = 0; c < 4; ++c)
-          if((a[c] < lo - 1e-9 || a[c] > 180.0 - lo + 1e-9) && !forced_angle(Q[c], a[c]))
+          if((a[c] < lo - angle_tolerance || a[c] > 180.0 - lo + angle_tolerance) && !forced_angle(Q[c], a[c]))
             bad_angle = true;
       }
       if(!valid) ++m_report.invalid_quads;
@@ -690,7 +711,7 @@ public:
       {
         if(invalid != o.invalid) return invalid < o.invalid;
         if(out != o.out) return out < o.out;
-        return worst < o.worst - 1e-9;
+        return worst < o.worst - angle_tolerance;
       }
     };
     // above the whole-mesh check's merge distance (1e-9 of the diagonal), and well below the
@@ -709,7 +730,7 @@ public:
         const double b = cost(m_mesh.quads[q]);
         r.worst = (std::max)(r.worst, b);
         if(b >= 1000.0) ++r.invalid;
-        else if(b > 45.0 + 1e-9) ++r.out;
+        else if(b > 45.0 + angle_tolerance) ++r.out;
         const Quad& Q = m_mesh.quads[q];
         int c = 0;
         while(Q[c] != v) ++c;
@@ -810,7 +831,7 @@ public:
     std::vector<std::size_t> near_bad;
     for(const Quad& q : m_mesh.quads) {
       const double b = made_or_changed(q) ? cost(q) : 0.0;
-      if(b > 45.0 + 1e-9 && b < 1000.0) near_bad.insert(near_bad.end(), q.begin(), q.end());
+      if(b > 45.0 + angle_tolerance && b < 1000.0) near_bad.insert(near_bad.end(), q.begin(), q.end());
     }
     near_bad = ring(ring(near_bad));
     std::vector<char> fixed(m_mesh.points.size(), 0);
@@ -912,6 +933,12 @@ private:
   }
 
   static constexpr std::size_t none = std::size_t(-1);
+  // Angles within this many degrees of a bound count as on it, and closer ones as equal:
+  // doubles hold an angle only to about 1e-8 degrees where the coordinates are 2^20 cell
+  // sides, and a choice made by rounding differs on a scaled or moved domain (a cut corner's
+  // core angle is exactly 135 degrees: a disc scaled by 2^-14 and moved to (3, 0.5) was
+  // refined elsewhere)
+  static constexpr double angle_tolerance = 1e-6;
 
   // for a sliding boundary point, moves `p` onto its edge strictly between its neighbours;
   // false if there is no room
@@ -1001,45 +1028,80 @@ private:
     return alpha < 45.0 && angle >= alpha - 1e-3; // false for NaN
   }
 
-  bool try_move_notch(std::size_t a2, std::size_t a, std::size_t b, std::size_t c, std::size_t c2,
-                      const Vertex_quads& quads_at)
+  enum Template_pass { ADAPTIVE, CORNERS, NOTCHES, NEIGHBOURS };
+
+  // every quad at core vertex v a square, all of one side (the uniform grid of §4.4)
+  bool on_square_lattice(std::size_t v, const Vertex_quads& quads_at) const
   {
-    const double beta = right_side_angle(m_xy[a], m_xy[b], m_xy[c]);
-    if(beta >= 112.5 - 1e-9)
-      return false;
-    const double h = m_size[b];
-    const Point_2d d = right_bisector(m_xy[a], m_xy[b], m_xy[c]);
-    const Point_2d old = m_xy[b];
-    const double old_min = (std::min)({ right_side_angle(m_xy[a2], m_xy[a], old), beta,
-                                        right_side_angle(old, m_xy[c], m_xy[c2]) });
-    for(double f : { 0.70710678118654752, 0.5, 0.35 }) {
-      const Point_2d p{old.x + f * h * d.x, old.y + f * h * d.y};
-      m_xy[b] = p;
-      bool ok = true;
-      for(std::size_t q : quads_at[b]) {
-        std::array<Point_2d, 4> P;
-        for(int k = 0; k < 4; ++k) P[k] = m_xy[m_mesh.quads[q][k]];
-        if(quad_badness(P) > 45.0 + 1e-9) { ok = false; break; }
-      }
-      if(ok) {
-        const double new_min = (std::min)({ right_side_angle(m_xy[a2], m_xy[a], p),
-                                            right_side_angle(m_xy[a], p, m_xy[c]),
-                                            right_side_angle(p, m_xy[c], m_xy[c2]) });
-        ok = new_min > old_min + 1e-9;
-      }
-      if(ok) {
-        const double clear = 0.25 * h;
-        ok = m_locator->segment_distance(m_xy[a], p, clear) > clear
-             && m_locator->segment_distance(p, m_xy[c], clear) > clear;
-      }
-      if(ok) {
-        m_mesh.points[b] = m_traits.construct_point_2_object()(FT(p.x), FT(p.y));
-        ++m_report.moved_notches;
-        return true;
+    double side = -1;
+    for(std::size_t q : quads_at[v]) {
+      const Quad& Q = m_mesh.quads[q];
+      for(int k = 0; k < 4; ++k) {
+        const Point_2d e = minus_2d(m_xy[Q[(k + 1) % 4]], m_xy[Q[k]]);
+        const Point_2d f = minus_2d(m_xy[Q[(k + 2) % 4]], m_xy[Q[(k + 1) % 4]]);
+        if(side < 0) side = length_2d(e);
+        if(std::abs(length_2d(e) - side) > 1e-6 * side || std::abs(dot_2d(e, f)) > 1e-6 * side * side)
+          return false;
       }
     }
-    m_xy[b] = old;
-    return false;
+    return true;
+  }
+
+  // Moves core boundary vertex b (a2, a, b, c, c2 consecutive on its cycle) along the bisector
+  // of its buffer-side angle, if `pass` applies to it and a step lowers the worst distance of
+  // the betas at a, b and c from [112.5, 225] (see the file comment).
+  bool try_move_boundary_vertex(std::size_t a2, std::size_t a, std::size_t b, std::size_t c,
+                                std::size_t c2, Template_pass pass, const Vertex_quads& quads_at)
+  {
+    const double beta = right_side_angle(m_xy[a], m_xy[b], m_xy[c]);
+    const bool notch = beta < 112.5 - angle_tolerance, corner = beta > 225.0 + angle_tolerance;
+    const bool applies = pass == CORNERS ? corner : pass == NOTCHES ? notch
+                         : pass == ADAPTIVE ? notch || corner : !notch && !corner;
+    if(!applies)
+      return false;
+    const Point_2d old = m_xy[b];
+    auto worst = [&](const Point_2d& p) {
+      double w = 0;
+      for(double x : { right_side_angle(m_xy[a2], m_xy[a], p), right_side_angle(m_xy[a], p, m_xy[c]),
+                       right_side_angle(p, m_xy[c], m_xy[c2]) })
+        w = (std::max)({ w, 112.5 - x, x - 225.0 });
+      return w;
+    };
+    double best = worst(old);
+    if(best <= angle_tolerance)
+      return false;
+    // in units of e, out along the bisector if positive: on the lattice a notch opens to 180
+    // degrees at 0.71 e, a corner is cut to 225 degrees at 0.41 e
+    static const std::vector<double> notch_steps{ 0.70710678118654752, 0.5, 0.35 };
+    static const std::vector<double> corner_steps{ -0.41421356237309505, -0.3, -0.2 };
+    static const std::vector<double> neighbour_steps{ 0.5, 0.35, 0.2, -0.3, -0.2 };
+    const double e = 0.5 * (length_2d(minus_2d(old, m_xy[a])) + length_2d(minus_2d(m_xy[c], old)));
+    const Point_2d d = right_bisector(m_xy[a], old, m_xy[c]);
+    const double clear = 0.25 * m_size[b];
+    double best_f = 0;
+    for(double f : notch ? notch_steps : corner ? corner_steps : neighbour_steps) {
+      const Point_2d p{old.x + f * e * d.x, old.y + f * e * d.y};
+      m_xy[b] = p;
+      bool ok = worst(p) < best - angle_tolerance;
+      for(auto q = quads_at[b].begin(); ok && q != quads_at[b].end(); ++q) {
+        std::array<Point_2d, 4> P;
+        for(int k = 0; k < 4; ++k) P[k] = m_xy[m_mesh.quads[*q][k]];
+        ok = quad_badness(P) <= 45.0 + angle_tolerance;
+      }
+      if(ok && m_locator->segment_distance(m_xy[a], p, clear) > clear
+         && m_locator->segment_distance(p, m_xy[c], clear) > clear) {
+        best = worst(p);
+        best_f = f;
+      }
+    }
+    if(best_f == 0) {
+      m_xy[b] = old;
+      return false;
+    }
+    m_xy[b] = Point_2d{old.x + best_f * e * d.x, old.y + best_f * e * d.y};
+    m_mesh.points[b] = m_traits.construct_point_2_object()(FT(m_xy[b].x), FT(m_xy[b].y));
+    ++(best_f > 0 ? m_report.moved_notches : m_report.cut_corners);
+    return true;
   }
 
   // Triangles of the strip, in order around the loop: an F edge with its apex on G, or a G
@@ -1159,6 +1221,12 @@ private:
         }
         if(best != none) { snap[best] = k; vertex_taken[k] = true; }
       }
+    }
+    for(std::size_t i = 0; i < n; ++i) {
+      const std::size_t k = snap[i];
+      if(k != none && is_feature(l, k) && domain_angle(l, k) > 135.0 && !needs_fan_of_three(l, k)
+         && snap[(i + n - 1) % n] != k && snap[(i + 1) % n] != k)
+        turn_to_bisector(c, i, k);
     }
     std::size_t s0 = 0;
     while(s0 < n && snap[s0] != none) ++s0;
@@ -1546,6 +1614,47 @@ private:
       const Point_2d f = along_2d(F[m], target, t);
       const double w = worst(f);
       if(w < best) { best = w; best_f = f; }
+    }
+    if(best_f.x == F[m].x && best_f.y == F[m].y) return;
+    const std::size_t id = m_first_base[c] + m;
+    F[m] = m_xy[id] = best_f;
+    m_mesh.points[id] = m_traits.construct_point_2_object()(FT(best_f.x), FT(best_f.y));
+  }
+
+  // An obtuse corner (135 to 225 degrees) whose node took one first buffer point F is split
+  // by the edge from it to F (paper Fig. 8(c): that point lies on the corner's bisector). F
+  // comes from a core vertex that need not face the corner, and an uneven split leaves the
+  // pairing one quad over the whole corner (a 136-degree sector whose core came to a point
+  // before it: 39 + 97 degrees, then one quad of 136). F moves towards the bisector, at its
+  // distance from the corner, while that lowers the worst of the two halves' and its two
+  // first-layer quads' deviation from 90 degrees.
+  void turn_to_bisector(std::size_t c, std::size_t m, std::size_t k)
+  {
+    const auto& cyc = m_cycles[c];
+    auto& F = m_first[c];
+    const std::size_t n = cyc.size(), a = (m + n - 1) % n, b = (m + 1) % n;
+    const auto& xy = m_locator->loop(m_cycle_loop[c]);
+    const std::size_t nv = xy.size();
+    const Point_2d& prev = xy[(k + nv - 1) % nv];
+    const Point_2d& corner = xy[k];
+    const Point_2d& next = xy[(k + 1) % nv];
+    const double alpha = domain_angle(m_cycle_loop[c], k);
+    auto worst = [&](const Point_2d& f) {
+      const double half = 360.0 - right_side_angle(prev, corner, f); // the domain on the left
+      return (std::max)({ std::abs(90.0 - half), std::abs(90.0 - (alpha - half)),
+                          quad_badness({ m_xy[cyc[a]], F[a], f, m_xy[cyc[m]] }),
+                          quad_badness({ m_xy[cyc[m]], f, F[b], m_xy[cyc[b]] }) });
+    };
+    double best = worst(F[m]);
+    if(best <= 45.0) return;
+    const Point_2d bis = right_bisector(prev, corner, next); // out of the domain
+    const double r = length_2d(minus_2d(F[m], corner));
+    const Point_2d target{ corner.x - r * bis.x, corner.y - r * bis.y };
+    Point_2d best_f = F[m];
+    for(double t : { 1.0, 0.75, 0.5, 0.25 }) {
+      const Point_2d f = along_2d(F[m], target, t);
+      const double w = worst(f);
+      if(w < best - angle_tolerance) { best = w; best_f = f; }
     }
     if(best_f.x == F[m].x && best_f.y == F[m].y) return;
     const std::size_t id = m_first_base[c] + m;
