@@ -516,6 +516,19 @@ TEST(Buffer_layers, blob_with_two_holes_meets_45_135)
   expect_angles_45_135(mesh_and_check(d, "wavy blob, two holes"), "wavy blob");
 }
 
+// Coarse regular polygons: their vertices turn by less than the feature angle but lie too
+// far off any chord to be left out, and are about as many as the first buffer points. Each
+// must end an F point's edge; as the middle of a fan of boundary edges it gave a quad with
+// its own angle (8 quads at 165 degrees on the 24-gon, 1 to 13 on every n from 18 to 48).
+TEST(Buffer_layers, coarse_regular_polygons_meet_45_135)
+{
+  for(int n : { 18, 21, 24, 29, 33, 40, 48 })
+    expect_angles_45_135(mesh_and_check(polygons({ disc(0, 0, 1, n) }), std::to_string(n) + "-gon"),
+                         std::to_string(n) + "-gon");
+  const Domain holed = polygons({ disc(0, 0, 1, 24), disc(0.1, 0, 0.4, 20) }, { Point(0.1, 0) });
+  expect_angles_45_135(mesh_and_check(holed, "24-gon with a 20-gon hole"), "24-gon with a 20-gon hole");
+}
+
 // A sector of the unit disc with apex angle alpha at the origin (its arc turning 5 degrees
 // or less per edge): the corner cases of paper §5 around 45, 135, 180 and 270 degrees and a
 // near cusp. Every one must give a valid mesh with the apex a vertex; the angles are printed.

@@ -100,6 +100,33 @@ TEST(Narrow_regions, a_needle_is_narrow_beyond_its_corner_zone)
   EXPECT_LE(corner.quadtree().depth(), 8);
 }
 
+// A thin rectangle whose long sides are single segments: seen from its corners, the far side
+// is the near side's neighbour along the loop, so a walk that gave up after its first sample
+// never found the gap. Both long sides' whole length needs more than two cells across, and
+// the full mesh follows (the buffer layers failed on 1 x 0.1 when the channel was not found).
+TEST(Narrow_regions, a_thin_rectangle_is_narrow_all_along)
+{
+  for(double w : { 0.1, 0.01 }) {
+    QM::Domain_2<K> d;
+    d.points = { K::Point_2(0, 0), K::Point_2(1, 0), K::Point_2(1, w), K::Point_2(0, w) };
+    d.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 } };
+    QM::Quadtree_mesher_2<K> tree_only(d, quadtree_only());
+    tree_only.run(QM::Stage::QUADTREE);
+    const auto& tree = tree_only.quadtree();
+    for(int k = 0; k <= 100; ++k) {
+      const double x = 0.005 + 0.99 * k / 100;
+      for(double y : { 0.0, w / 2, 0.999 * w })
+        EXPECT_LT(tree.cell_side(tree.locate(K::Point_2(x, y)).level), w / 2) << "w = " << w << " at " << x;
+    }
+    QM::Quadtree_mesher_2<K> mesher(d);
+    auto mesh = mesher.run(QM::Stage::BUFFER2);
+    EXPECT_TRUE(qm2_checks::is_conforming(mesh)) << "w = " << w;
+    const auto range = qm2_checks::angle_range(mesh);
+    EXPECT_GE(range.min, 45 - 1e-7) << "w = " << w;
+    EXPECT_LE(range.max, 135 + 1e-7) << "w = " << w;
+  }
+}
+
 TEST(Narrow_regions, invalid_loops_are_reported)
 {
   QM::Domain_2<K> d = dumbbell(0.01, 16);

@@ -342,6 +342,8 @@ public:
       if(!requests.empty())
         msg << ", near (" << requests.front().first.x << ", " << requests.front().first.y << ")";
       msg << ", after " << m_rounds << " refinement rounds";
+      if(added < requests.size() || m_tree->depth() >= m_tree->max_depth()) // not the round budget
+        msg << "; finer cells are refused there: " << m_tree->depth_limit();
       throw Meshing_error(msg.str());
     }
   }

@@ -198,6 +198,8 @@ std::vector<Size_sample> narrow_region_samples(const Domain_2<K>& domain, const 
   // Gaps wider than this many times the local segment length leave the cells to the point
   // spacing: they cannot make a region narrow.
   const double reach_factor = 4;
+  // samples on a stretch of segment without any gap in reach
+  const double no_gap_samples = 8;
   auto add = [&](const P& q, std::size_t on, double arc, double first_radius) {
     P r;
     const double w = finder.gap(q, on, arc, reach_factor * finder.segments()[on].length, r, first_radius);
@@ -228,9 +230,11 @@ std::vector<Size_sample> narrow_region_samples(const Domain_2<K>& domain, const 
       const double w = add(P{ { s.a[0] + u * (s.b[0] - s.a[0]), s.a[1] + u * (s.b[1] - s.a[1]) } }, k,
                            s.arc_a + t, 2 * last_gap);
       last_gap = w;
+      // no gap here: near a corner the far side still counts as its neighbour along the loop
+      // (a thin rectangle's long sides, seen from its corners), so look again farther on
       t += std::isfinite(w)                ? (std::max)(w / 3, min_step)
            : after_needle && t == 0 ? Boundary_gap_finder::corner_zone * s.length
-                                    : s.length;
+                                    : s.length / no_gap_samples;
     }
   }
   return samples;

@@ -1261,6 +1261,7 @@ private:
     // along the loop around it, one node each, at about their own spacing: the strip stays a
     // ladder and the pairing is left free to fan where it pays.
     for(std::size_t r = 0; r < n; ++r) P[r] = (std::min)(P[r], O + L);
+    std::vector<bool> spread(n, false); // the points spread around a shared node: a corner's fan
     // A corner wider than 225 degrees needs three F points on its node for a fan of three
     // quads (see needs_fan_of_three): where fewer project onto it, the nearest neighbours
     // (free, on their own nodes) join them.
@@ -1345,7 +1346,10 @@ private:
           hit[rot(r)] = locate_param(l, s);
         }
       }
-      for(std::size_t r = a; r <= b; ++r) share[r] = r > anchor && r <= last_kept ? anchor : none;
+      for(std::size_t r = a; r <= b; ++r) {
+        share[r] = r > anchor && r <= last_kept ? anchor : none;
+        spread[r] = true;
+      }
       a = b + 1;
     }
 
@@ -1420,166 +1424,214 @@ private:
         }
       }
     }
-    std::vector<Node> chain;
-    std::vector<std::size_t> chain_of_node(nodes.size(), none);
-    for(std::size_t k = 0; k < nodes.size(); ++k)
-      if(nodes[k].keep) { chain_of_node[k] = chain.size(); chain.push_back(nodes[k]); }
-    const std::size_t M0 = chain.size();
-    std::vector<std::size_t> gid(M0);
-    for(std::size_t k = 0; k < M0; ++k)
-      gid[k] = chain[k].vertex != none ? input_vertex_point(l, chain[k].vertex)
-                                       : point_on_edge(l, hit[rot(chain[k].owner)].edge, hit[rot(chain[k].owner)].t);
-    std::vector<std::size_t> node_of_vertex(nv, none), node_of_owner(n, none);
-    for(std::size_t k = 0; k < M0; ++k) {
-      if(chain[k].vertex != none) node_of_vertex[chain[k].vertex] = k;
-      if(chain[k].owner != none) node_of_owner[chain[k].owner] = k;
+    // The pairing of the strip, from the candidate nodes (copies: a second plan starts afresh).
+    struct Strip_plan { bool ok = false; Strip_result best; std::vector<std::size_t> gid; };
+    auto plan_strip = [&](std::vector<Node> nodes, std::vector<std::size_t> alias_vertex, bool take_over) {
+      Strip_plan plan;
+      // A kept loop vertex wider than 135 degrees that no F point projects onto would be the
+      // middle of a fan of boundary edges, a quad with the vertex's own angle: a coarse polygon's
+      // vertices, kept for the chord tolerance and turning by less than the feature angle, are
+      // about as many as the F points (a 24-gon of radius 1 had 8 quads at 165 degrees). Such a
+      // vertex takes over the node of the nearer projection beside it in the chain; the first
+      // node stays the first F point's, and those spread around a corner stay its fan's.
+      if(take_over) {
+        std::vector<std::size_t> kept;
+        for(std::size_t k = 0; k < nodes.size(); ++k)
+          if(nodes[k].keep) kept.push_back(k);
+        const std::size_t nk = kept.size();
+        for(std::size_t j = 0; j < nk; ++j) {
+          Node& v = nodes[kept[j]];
+          if(v.vertex == none || v.owner != none || domain_angle(l, v.vertex) <= 135.0) continue;
+          std::size_t take = none;
+          double nearest = HUGE_VAL;
+          for(std::size_t side : { (j + nk - 1) % nk, (j + 1) % nk }) {
+            const Node& p = nodes[kept[side]];
+            if(!p.keep || p.vertex != none || p.owner == none || p.owner == 0 || spread[p.owner]) continue;
+            const double d = std::abs(cyclic(p.param - v.param));
+            if(d < nearest) { nearest = d; take = kept[side]; }
+          }
+          if(take == none) continue;
+          v.owner = nodes[take].owner;
+          alias_vertex[v.owner] = v.vertex;
+          nodes[take].keep = false;
+        }
+      }
+      std::vector<Node> chain;
+      std::vector<std::size_t> chain_of_node(nodes.size(), none);
+      for(std::size_t k = 0; k < nodes.size(); ++k)
+        if(nodes[k].keep) { chain_of_node[k] = chain.size(); chain.push_back(nodes[k]); }
+      const std::size_t M0 = chain.size();
+      std::vector<std::size_t> gid(M0);
+      for(std::size_t k = 0; k < M0; ++k)
+        gid[k] = chain[k].vertex != none ? input_vertex_point(l, chain[k].vertex)
+                                         : point_on_edge(l, hit[rot(chain[k].owner)].edge, hit[rot(chain[k].owner)].t);
+      std::vector<std::size_t> node_of_vertex(nv, none), node_of_owner(n, none);
+      for(std::size_t k = 0; k < M0; ++k) {
+        if(chain[k].vertex != none) node_of_vertex[chain[k].vertex] = k;
+        if(chain[k].owner != none) node_of_owner[chain[k].owner] = k;
+      }
+      std::vector<std::size_t> g(n);
+      for(std::size_t r = 0; r < n; ++r) {
+        if(share[r] != none) { g[r] = g[share[r]]; continue; }
+        if(P[r] >= O + L * (1 - 1e-12)) { g[r] = M0; continue; } // projects past the start
+        g[r] = snap[rot(r)] != none ? node_of_vertex[snap[rot(r)]]
+               : alias_vertex[r] != none ? node_of_vertex[alias_vertex[r]] : node_of_owner[r];
+        if(g[r] == none) g[r] = r > 0 ? g[r - 1] : 0;
+        if(r > 0 && g[r] < g[r - 1]) g[r] = g[r - 1];
+      }
+      if(g[0] != 0)
+        return plan; // not ok: the chain is out of order
+
+      const std::size_t fbase = m_first_base[c];
+      std::vector<std::size_t> fid(n);
+      for(std::size_t r = 0; r < n; ++r) fid[r] = fbase + rot(r);
+
+      std::vector<double> gparam(gid.size());
+      for(std::size_t k = 0; k < gid.size(); ++k) gparam[k] = chain[k].param;
+      // n F edges and M G edges make n + M triangles, paired into quads. Every gap may take one
+      // more chain node, in the middle of its longest edge (on the loop there, or on a left-out
+      // loop vertex near it): the pairing decides where. It switches a ladder of quads between
+      // its two phases, and makes an odd triangle count even, where that costs least.
+      auto solve = [&]() {
+        const std::size_t M0 = gid.size();
+        std::vector<Extra_node> extra(n);
+        struct Site { std::size_t vertex; double param; };
+        std::vector<Site> sites(n);
+        const std::size_t first_candidate = m_xy.size();
+        for(std::size_t r = 0; r < n; ++r) {
+          const std::size_t g0 = g[r], k = (r + 1 < n ? g[r + 1] : M0) - g0;
+          if(g0 >= M0 || k == 0) continue;
+          std::size_t e = 0;
+          double longest = -1;
+          for(std::size_t j = 0; j < k; ++j) {
+            const double len = length_2d(minus_2d(m_xy[gid[(g0 + j + 1) % M0]], m_xy[gid[g0 + j]]));
+            if(len > longest) { longest = len; e = j; }
+          }
+          const double a = gparam[g0 + e], b = g0 + e + 1 < M0 ? gparam[g0 + e + 1] : gparam[0] + L;
+          const double mid = 0.5 * (a + b);
+          const Loop_locator::Hit h = locate_param(l, mid);
+          // a left-out loop vertex near the middle keeps the input's own point
+          Site site{ none, mid };
+          Point_2d xy = h.point;
+          double nearest = 0.25 * (b - a);
+          for(std::size_t v : { h.edge, (h.edge + 1) % nv }) {
+            const double sv = mid + cyclic(m_locator->arc(l, v) - mid);
+            if(std::abs(sv - mid) < nearest) {
+              nearest = std::abs(sv - mid);
+              site = Site{ v, sv };
+              xy = loop_xy[v];
+            }
+          }
+          sites[r] = site;
+          extra[r] = Extra_node{ e, m_xy.size() };
+          m_xy.push_back(xy);
+        }
+        Strip_result res = pair_strip(fid, gid, g, extra);
+        // the candidates had ids of their own past the mesh's points (the cost cache knows quads
+        // by their ids); the chosen ones become mesh points
+        m_xy.resize(first_candidate);
+        for(auto it = m_cost_cache.begin(); it != m_cost_cache.end();) {
+          bool candidate = false;
+          for(std::size_t v : it->first) candidate = candidate || v >= first_candidate;
+          it = candidate ? m_cost_cache.erase(it) : std::next(it);
+        }
+        std::vector<std::size_t> real_id(n, none); // by candidate id - first_candidate
+        for(std::size_t r = n; r-- > 0;) { // from the back: earlier chain positions stay valid
+          if(!res.inserted[r]) continue;
+          std::size_t id;
+          if(sites[r].vertex != none) {
+            id = input_vertex_point(l, sites[r].vertex);
+          } else {
+            const Loop_locator::Hit h = locate_param(l, sites[r].param);
+            id = point_on_edge(l, h.edge, h.t);
+          }
+          real_id[extra[r].id - first_candidate] = id;
+          const std::size_t after = g[r] + extra[r].edge;
+          gid.insert(gid.begin() + std::ptrdiff_t(after + 1), id);
+          gparam.insert(gparam.begin() + std::ptrdiff_t(after + 1), sites[r].param);
+          for(auto& x : g) if(x > after) ++x;
+        }
+        for(Quad& q : res.quads)
+          for(std::size_t& v : q)
+            if(v >= first_candidate && v - first_candidate < real_id.size()) v = real_id[v - first_candidate];
+        return res;
+      };
+      m_cache_costs = true;
+      Strip_result best = solve();
+      // A fan of boundary edges that is flat (its middle node is no input vertex and lies on a
+      // straight piece of the boundary) cannot be made a quad: such a node is taken out and the
+      // strip paired again.
+      for(int attempt = 0; attempt < 8 && best.cost.sum >= 1e12; ++attempt) {
+        // a chain node that may be left out: not the first, not an input vertex
+        auto removable = [&](std::size_t k) { return k != 0 && !is_input_vertex(gid[k]); };
+        std::vector<std::size_t> removed;
+        for(const Quad& q : best.quads) {
+          std::size_t remove = none;
+          if(cost(q) < 1000.0) continue;
+          std::vector<std::size_t> pos;
+          for(std::size_t v : q) {
+            auto it = std::find(gid.begin(), gid.end(), v);
+            if(it != gid.end()) pos.push_back(std::size_t(it - gid.begin()));
+          }
+          if(pos.size() != 3) continue;
+          const std::size_t M0 = gid.size();
+          // the middle node if it may go, else an end of the fan: with one node fewer nearby the
+          // pairing can put the fan elsewhere
+          for(std::size_t mid : pos) {
+            const bool has_prev = std::find(pos.begin(), pos.end(), (mid + M0 - 1) % M0) != pos.end();
+            const bool has_next = std::find(pos.begin(), pos.end(), (mid + 1) % M0) != pos.end();
+            if(!has_prev || !has_next) continue;
+            for(std::size_t k : { mid, (mid + M0 - 1) % M0, (mid + 1) % M0 })
+              if(remove == none && removable(k) && chord_within_tolerance(l, gid, gparam, k)) remove = k;
+          }
+          if(remove != none) removed.push_back(remove);
+        }
+        if(removed.empty()) break;
+        std::sort(removed.rbegin(), removed.rend());
+        removed.erase(std::unique(removed.begin(), removed.end()), removed.end());
+        auto erase_node = [&](std::size_t remove) {
+          gid.erase(gid.begin() + std::ptrdiff_t(remove));
+          gparam.erase(gparam.begin() + std::ptrdiff_t(remove));
+          for(auto& x : g) if(x >= remove) --x;
+        };
+        for(std::size_t remove : removed) // from the back: earlier positions stay valid
+          erase_node(remove);
+        // An odd triangle count would make the pairing put a node back, likely in the same
+        // gap and with it the flat fan: a neighbour of a removed node goes too, if it may.
+        if((n + gid.size()) % 2 != 0) {
+          const std::size_t M1 = gid.size();
+          std::size_t extra = none;
+          for(std::size_t j = 0; j < removed.size() && extra == none; ++j) {
+            // the removed node's successor now sits where it was (positions before it shifted)
+            const std::size_t at = (removed[j] - (removed.size() - 1 - j)) % M1;
+            for(std::size_t k : { at, (at + M1 - 1) % M1 })
+              if(extra == none && removable(k) && chord_within_tolerance(l, gid, gparam, k)) extra = k;
+          }
+          if(extra != none) erase_node(extra);
+        }
+        best = solve();
+      }
+      plan.ok = true;
+      plan.best = std::move(best);
+      plan.gid = std::move(gid);
+      return plan;
+    };
+    // The vertices take over only where the pairing without it leaves a quad out of range:
+    // elsewhere the pairing may do better by switching phase at the vertex.
+    Strip_plan plan = plan_strip(nodes, alias_vertex, false);
+    if(plan.ok && plan.best.cost.worst > 45.0 + angle_tolerance) {
+      Strip_plan other = plan_strip(nodes, alias_vertex, true);
+      if(other.ok && other.best.cost < plan.best.cost) plan = std::move(other);
     }
-    std::vector<std::size_t> g(n);
-    for(std::size_t r = 0; r < n; ++r) {
-      if(share[r] != none) { g[r] = g[share[r]]; continue; }
-      if(P[r] >= O + L * (1 - 1e-12)) { g[r] = M0; continue; } // projects past the start
-      g[r] = snap[rot(r)] != none ? node_of_vertex[snap[rot(r)]]
-             : alias_vertex[r] != none ? node_of_vertex[alias_vertex[r]] : node_of_owner[r];
-      if(g[r] == none) g[r] = r > 0 ? g[r - 1] : 0;
-      if(r > 0 && g[r] < g[r - 1]) g[r] = g[r - 1];
-    }
-    if(g[0] != 0) {
+    m_cache_costs = false;
+    m_cost_cache.clear();
+    if(!plan.ok) {
       request_all(c);
       m_report.failure = "the boundary chain of a buffer strip is out of order";
       return;
     }
-
-    const std::size_t fbase = m_first_base[c];
-    std::vector<std::size_t> fid(n);
-    for(std::size_t r = 0; r < n; ++r) fid[r] = fbase + rot(r);
-
-    std::vector<double> gparam(gid.size());
-    for(std::size_t k = 0; k < gid.size(); ++k) gparam[k] = chain[k].param;
-    // n F edges and M G edges make n + M triangles, paired into quads. Every gap may take one
-    // more chain node, in the middle of its longest edge (on the loop there, or on a left-out
-    // loop vertex near it): the pairing decides where. It switches a ladder of quads between
-    // its two phases, and makes an odd triangle count even, where that costs least.
-    auto solve = [&]() {
-      const std::size_t M0 = gid.size();
-      std::vector<Extra_node> extra(n);
-      struct Site { std::size_t vertex; double param; };
-      std::vector<Site> sites(n);
-      const std::size_t first_candidate = m_xy.size();
-      for(std::size_t r = 0; r < n; ++r) {
-        const std::size_t g0 = g[r], k = (r + 1 < n ? g[r + 1] : M0) - g0;
-        if(g0 >= M0 || k == 0) continue;
-        std::size_t e = 0;
-        double longest = -1;
-        for(std::size_t j = 0; j < k; ++j) {
-          const double len = length_2d(minus_2d(m_xy[gid[(g0 + j + 1) % M0]], m_xy[gid[g0 + j]]));
-          if(len > longest) { longest = len; e = j; }
-        }
-        const double a = gparam[g0 + e], b = g0 + e + 1 < M0 ? gparam[g0 + e + 1] : gparam[0] + L;
-        const double mid = 0.5 * (a + b);
-        const Loop_locator::Hit h = locate_param(l, mid);
-        // a left-out loop vertex near the middle keeps the input's own point
-        Site site{ none, mid };
-        Point_2d xy = h.point;
-        double nearest = 0.25 * (b - a);
-        for(std::size_t v : { h.edge, (h.edge + 1) % nv }) {
-          const double sv = mid + cyclic(m_locator->arc(l, v) - mid);
-          if(std::abs(sv - mid) < nearest) {
-            nearest = std::abs(sv - mid);
-            site = Site{ v, sv };
-            xy = loop_xy[v];
-          }
-        }
-        sites[r] = site;
-        extra[r] = Extra_node{ e, m_xy.size() };
-        m_xy.push_back(xy);
-      }
-      Strip_result res = pair_strip(fid, gid, g, extra);
-      // the candidates had ids of their own past the mesh's points (the cost cache knows quads
-      // by their ids); the chosen ones become mesh points
-      m_xy.resize(first_candidate);
-      for(auto it = m_cost_cache.begin(); it != m_cost_cache.end();) {
-        bool candidate = false;
-        for(std::size_t v : it->first) candidate = candidate || v >= first_candidate;
-        it = candidate ? m_cost_cache.erase(it) : std::next(it);
-      }
-      std::vector<std::size_t> real_id(n, none); // by candidate id - first_candidate
-      for(std::size_t r = n; r-- > 0;) { // from the back: earlier chain positions stay valid
-        if(!res.inserted[r]) continue;
-        std::size_t id;
-        if(sites[r].vertex != none) {
-          id = input_vertex_point(l, sites[r].vertex);
-        } else {
-          const Loop_locator::Hit h = locate_param(l, sites[r].param);
-          id = point_on_edge(l, h.edge, h.t);
-        }
-        real_id[extra[r].id - first_candidate] = id;
-        const std::size_t after = g[r] + extra[r].edge;
-        gid.insert(gid.begin() + std::ptrdiff_t(after + 1), id);
-        gparam.insert(gparam.begin() + std::ptrdiff_t(after + 1), sites[r].param);
-        for(auto& x : g) if(x > after) ++x;
-      }
-      for(Quad& q : res.quads)
-        for(std::size_t& v : q)
-          if(v >= first_candidate && v - first_candidate < real_id.size()) v = real_id[v - first_candidate];
-      return res;
-    };
-    m_cache_costs = true;
-    Strip_result best = solve();
-    // A fan of boundary edges that is flat (its middle node is no input vertex and lies on a
-    // straight piece of the boundary) cannot be made a quad: such a node is taken out and the
-    // strip paired again.
-    for(int attempt = 0; attempt < 8 && best.cost.sum >= 1e12; ++attempt) {
-      // a chain node that may be left out: not the first, not an input vertex
-      auto removable = [&](std::size_t k) { return k != 0 && !is_input_vertex(gid[k]); };
-      std::vector<std::size_t> removed;
-      for(const Quad& q : best.quads) {
-        std::size_t remove = none;
-        if(cost(q) < 1000.0) continue;
-        std::vector<std::size_t> pos;
-        for(std::size_t v : q) {
-          auto it = std::find(gid.begin(), gid.end(), v);
-          if(it != gid.end()) pos.push_back(std::size_t(it - gid.begin()));
-        }
-        if(pos.size() != 3) continue;
-        const std::size_t M0 = gid.size();
-        // the middle node if it may go, else an end of the fan: with one node fewer nearby the
-        // pairing can put the fan elsewhere
-        for(std::size_t mid : pos) {
-          const bool has_prev = std::find(pos.begin(), pos.end(), (mid + M0 - 1) % M0) != pos.end();
-          const bool has_next = std::find(pos.begin(), pos.end(), (mid + 1) % M0) != pos.end();
-          if(!has_prev || !has_next) continue;
-          for(std::size_t k : { mid, (mid + M0 - 1) % M0, (mid + 1) % M0 })
-            if(remove == none && removable(k) && chord_within_tolerance(l, gid, gparam, k)) remove = k;
-        }
-        if(remove != none) removed.push_back(remove);
-      }
-      if(removed.empty()) break;
-      std::sort(removed.rbegin(), removed.rend());
-      removed.erase(std::unique(removed.begin(), removed.end()), removed.end());
-      auto erase_node = [&](std::size_t remove) {
-        gid.erase(gid.begin() + std::ptrdiff_t(remove));
-        gparam.erase(gparam.begin() + std::ptrdiff_t(remove));
-        for(auto& x : g) if(x >= remove) --x;
-      };
-      for(std::size_t remove : removed) // from the back: earlier positions stay valid
-        erase_node(remove);
-      // An odd triangle count would make the pairing put a node back, likely in the same
-      // gap and with it the flat fan: a neighbour of a removed node goes too, if it may.
-      if((n + gid.size()) % 2 != 0) {
-        const std::size_t M1 = gid.size();
-        std::size_t extra = none;
-        for(std::size_t j = 0; j < removed.size() && extra == none; ++j) {
-          // the removed node's successor now sits where it was (positions before it shifted)
-          const std::size_t at = (removed[j] - (removed.size() - 1 - j)) % M1;
-          for(std::size_t k : { at, (at + M1 - 1) % M1 })
-            if(extra == none && removable(k) && chord_within_tolerance(l, gid, gparam, k)) extra = k;
-        }
-        if(extra != none) erase_node(extra);
-      }
-      best = solve();
-    }
-    m_cache_costs = false;
-    m_cost_cache.clear();
+    const Strip_result& best = plan.best;
+    const std::vector<std::size_t>& gid = plan.gid;
     if(best.cost.worst == HUGE_VAL) {
       request_all(c);
       m_report.failure = "no pairing of a buffer strip into quads";
