@@ -7,6 +7,7 @@
 #include "qm2_test_kernel.h"
 
 #include <CGAL/Quad_mesher_2/Domain_2.h>
+#include <CGAL/Quad_mesher_2/Domain_loops_2.h>
 #include <CGAL/Quad_mesher_2/IO/read_WKT.h>
 #include <CGAL/Quad_mesher_2/IO/read_domain.h>
 #include <CGAL/Quad_mesher_2/IO/read_node.h>
@@ -534,9 +535,9 @@ TEST(IO_read, WktManyHolesAndTouchingRings)
 {
   using namespace qm2_test_io_read;
   // Thin triangular holes (seed must be strictly inside each) and a hole touching the outer
-  // ring at a vertex (the vertex is shared). Unclosed rings are accepted.
-  const std::string wkt = "polygon((0 0, 100 0, 100 100, 0 100),"
-                          " (10 10, 90 10.001, 10 10.002),"
+  // ring at a vertex (the vertex is shared).
+  const std::string wkt = "polygon((0 0, 100 0, 100 100, 0 100, 0 0),"
+                          " (10 10, 90 10.001, 10 10.002, 10 10),"
                           " (0 100, 10 80, 20 90, 0 100),"
                           " (50 50, 50.000001 50, 50 50.000001, 50 50))";
   Domain d;
@@ -564,6 +565,43 @@ TEST(IO_read, WktPointCloud)
   EXPECT_TRUE(d.holes.empty());
 }
 
+// The boundary checks run after reading; their messages name vertices and segments as the
+// file does (a 1-based .poly: "segment 3 (line 8)", not the 0-based index 2), and WKT ones
+// by ring and line.
+TEST(IO_read, LaterErrorsUseTheFilesNumbersAndLines)
+{
+  using namespace qm2_test_io_read;
+  auto loop_error = [](const Domain& d) {
+    try {
+      CGAL::Quad_mesher_2::extract_loops(d);
+    } catch(const CGAL::Quad_mesher_2::Meshing_error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  Domain d;
+  std::string err;
+  const std::string bowtie = write_file("bowtie1.poly", "# a bowtie\n4 2 0 0\n1 0 0\n2 1 1\n3 1 0\n4 0 1\n"
+                                                        "4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n1\n1 5 5\n");
+  ASSERT_TRUE(QIO::read_poly(bowtie, d, &err)) << err;
+  std::string msg = loop_error(d);
+  for(const char* part : { "segments 1 (line 8) (vertices 1 (line 3) (0, 0) and 2 (line 4) (1, 1))",
+                           "and 3 (line 10) (vertices 3 (line 5) (1, 0) and 4 (line 6) (0, 1))", "cross" })
+    EXPECT_NE(msg.find(part), std::string::npos) << msg << "\nlacks: " << part;
+
+  const std::string open = write_file("open1.poly", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n2 0\n1 1 2\n2 2 3\n0\n");
+  ASSERT_TRUE(QIO::read_poly(open, d, &err)) << err;
+  msg = loop_error(d);
+  EXPECT_NE(msg.find("vertex 1 (line 2) (0, 0) is the end of only one segment (segment 1 (line 6))"),
+            std::string::npos) << msg;
+
+  const std::string wkt = write_file("bowtie1.wkt", "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0),\n(2 2, 8 2, 8 8, 2 8, 2 2))\n"
+                                                    "POLYGON ((1 1, 9 1, 9 9, 1 9, 1 1))");
+  ASSERT_TRUE(QIO::read_WKT(wkt, d, &err)) << err;
+  msg = loop_error(d);
+  EXPECT_NE(msg.find("of the outer ring of polygon 2 (line 3)"), std::string::npos) << msg;
+}
+
 TEST(IO_read, WktMalformedCases)
 {
   using namespace qm2_test_io_read;
@@ -579,6 +617,7 @@ TEST(IO_read, WktMalformedCases)
     {"w_truncated", "POLYGON ((0 0, 1 0,\n 0 1", 2, "end of file"},
     {"w_missing_paren", "POLYGON ((0 0, 1 0, 0 1, 0 0)", 1, "expected ')'"},
     {"w_two_vertices", "POLYGON ((0 0, 1 0, 0 0))", 1, "at least 3"},
+    {"w_unclosed", "POLYGON ((0 0, 1 0,\n1 1, 0 1))", 2, "is not closed: it ends at (0, 1)"},
     {"w_not_simple", "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0),\n(2 2, 8 8, 2 8, 8 2, 2 2))", 2, "not simple"},
     {"w_collinear", "POLYGON ((0 0, 1 0, 2 0, 0 0))", 1, "not simple"},
     {"w_repeated_vertex", "POLYGON ((0 0, 4 0, 2 2, 4 4, 0 4, 2 2, 0 0))", 1, "duplicate point"},

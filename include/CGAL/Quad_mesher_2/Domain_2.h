@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -25,8 +26,29 @@ struct Domain_2
   std::vector<Point_2> points;
   std::vector<Segment> segments;
   std::vector<Point_2> holes;
+  /// Optional, for error messages: how the user knows point `i`, segment `s`, hole `h`. The readers
+  /// give the file's own numbering and line (`"5 (line 7)"` in a 1-based `.poly`); where
+  /// these are empty, messages give the 0-based index.
+  std::vector<std::string> point_labels;
+  std::vector<std::string> segment_labels;
+  std::vector<std::string> hole_labels;
 
   bool is_point_cloud() const { return segments.empty(); }
+  /// `point_labels[i]`, or `i` (0-based) if there is none
+  std::string point_label(std::size_t i) const
+  {
+    return i < point_labels.size() ? point_labels[i] : std::to_string(i);
+  }
+  /// `segment_labels[s]`, or `s` (0-based) if there is none
+  std::string segment_label(std::size_t s) const
+  {
+    return s < segment_labels.size() ? segment_labels[s] : std::to_string(s);
+  }
+  /// `hole_labels[h]`, or `h` (0-based) if there is none
+  std::string hole_label(std::size_t h) const
+  {
+    return h < hole_labels.size() ? hole_labels[h] : std::to_string(h);
+  }
 };
 
 } // namespace Quad_mesher_2

@@ -175,7 +175,7 @@ public:
     const std::size_t np = m_d.points.size();
     if(m_d.segments.empty()) {  // a point cloud
       if(!m_d.holes.empty())
-        throw Meshing_error("hole point 0 " + pt(m_d.holes[0]) +
+        throw Meshing_error("hole point " + m_d.hole_label(0) + " " + pt(m_d.holes[0]) +
                             " lies outside every boundary loop: the domain has no segments, so there is nothing to make a hole in");
       for(std::size_t i = 0; i < np; ++i) out.isolated_points.push_back(i);
       return out;
@@ -197,10 +197,10 @@ public:
       std::size_t on_seg = none;
       const std::size_t region = locate(p, none, on_seg);
       if(on_seg != none)
-        throw Meshing_error("point " + std::to_string(i) + " " + pt(p) + " is on no segment but lies on segment " +
+        throw Meshing_error("point " + m_d.point_label(i) + " " + pt(p) + " is on no segment but lies on segment " +
                             seg_str(on_seg) + ": split the segment there or remove the point");
       if(!m_in_domain[region == none ? m_loops.size() : region])
-        throw Meshing_error("point " + std::to_string(i) + " " + pt(p) + " is on no segment and lies outside the domain (" +
+        throw Meshing_error("point " + m_d.point_label(i) + " " + pt(p) + " is on no segment and lies outside the domain (" +
                             where_region(region) + ")");
       out.isolated_points.push_back(i);
     }
@@ -225,17 +225,17 @@ public:
 private:
   // ---- messages -------------------------------------------------------------------------
   std::string pt(const Point_2& p) const { return loops_format_point(p, m_traits); }
-  std::string vtx(std::size_t v) const { return "vertex " + std::to_string(v) + " " + pt(m_d.points[v]); }
+  std::string vtx(std::size_t v) const { return "vertex " + m_d.point_label(v) + " " + pt(m_d.points[v]); }
   std::string seg_str(std::size_t s) const
   {
     const auto& sg = m_d.segments[s];
-    return std::to_string(s) + " (vertices " + std::to_string(sg[0]) + " " + pt(m_d.points[sg[0]]) + " and " +
-           std::to_string(sg[1]) + " " + pt(m_d.points[sg[1]]) + ")";
+    return m_d.segment_label(s) + " (vertices " + m_d.point_label(sg[0]) + " " + pt(m_d.points[sg[0]]) + " and " +
+           m_d.point_label(sg[1]) + " " + pt(m_d.points[sg[1]]) + ")";
   }
   std::string loop_str(std::size_t l) const
   {
     return "the loop of " + std::to_string(m_loops[l].size()) + " vertices starting at " + vtx(m_loops[l][0]) +
-           " (segment " + std::to_string(m_loop_first_segment[l]) + ")";
+           " (segment " + m_d.segment_label(m_loop_first_segment[l]) + ")";
   }
   std::string where_region(std::size_t region) const
   {
@@ -255,7 +255,7 @@ private:
           throw Meshing_error("segment " + std::to_string(s) + " refers to vertex " + std::to_string(sg[e]) +
                               ", but there are only " + std::to_string(np) + " points (indices are 0-based)");
       if(sg[0] == sg[1])
-        throw Meshing_error("zero-length segment " + std::to_string(s) + ": both ends are " + vtx(sg[0]));
+        throw Meshing_error("zero-length segment " + m_d.segment_label(s) + ": both ends are " + vtx(sg[0]));
       if(m_traits.equal_2_object()(m_d.points[sg[0]], m_d.points[sg[1]]))
         throw Meshing_error("zero-length segment " + seg_str(s) + ": its two vertices are at the same place");
       ++m_degree[sg[0]];
@@ -271,7 +271,7 @@ private:
     for(std::size_t k = 1; k < ns; ++k) {
       if(keys[k][0] != keys[k - 1][0] || keys[k][1] != keys[k - 1][1]) continue;
       const std::size_t a = keys[k][0], b = keys[k][1];
-      const std::string both = "segments " + std::to_string(keys[k - 1][2]) + " and " + std::to_string(keys[k][2]) +
+      const std::string both = "segments " + m_d.segment_label(keys[k - 1][2]) + " and " + m_d.segment_label(keys[k][2]) +
                                " both join " + vtx(a) + " and " + vtx(b);
       if(m_degree[a] == 2 && m_degree[b] == 2)
         throw Meshing_error("a loop with fewer than 3 vertices (a repeated segment): " + both);
@@ -282,7 +282,7 @@ private:
       if(m_degree[v] == 0 || m_degree[v] == 2) continue;
       std::string segs;
       for(std::size_t s = 0; s < ns; ++s)
-        if(m_d.segments[s][0] == v || m_d.segments[s][1] == v) segs += (segs.empty() ? "" : ", ") + std::to_string(s);
+        if(m_d.segments[s][0] == v || m_d.segments[s][1] == v) segs += (segs.empty() ? "" : ", ") + m_d.segment_label(s);
       if(m_degree[v] == 1)
         throw Meshing_error(vtx(v) + " is the end of only one segment (segment " + segs +
                             "): the boundary is not closed there (an open loop or a dangling segment)");
@@ -318,7 +318,7 @@ private:
       if(verts.size() < 3) {
         std::string vs;
         for(std::size_t u : verts) vs += " " + vtx(u);
-        throw Meshing_error("a loop with fewer than 3 vertices (segment " + std::to_string(s0) + "):" + vs);
+        throw Meshing_error("a loop with fewer than 3 vertices (segment " + m_d.segment_label(s0) + "):" + vs);
       }
       m_loops.push_back(std::move(verts));
       m_loop_first_segment.push_back(s0);
@@ -401,7 +401,7 @@ private:
     for(const auto& e : ends) {
       const auto& s = m_d.segments[e[1]];
       if(on_closed_segment(m_d.points[s[0]], m_d.points[s[1]], m_d.points[e[0]]))
-        throw Meshing_error(both + " touch: " + vtx(e[0]) + " lies on segment " + std::to_string(e[1]) +
+        throw Meshing_error(both + " touch: " + vtx(e[0]) + " lies on segment " + m_d.segment_label(e[1]) +
                             " (loops may not touch, and a vertex may not lie inside a segment)");
     }
     throw Meshing_error(both + " cross");
@@ -497,7 +497,7 @@ private:
       std::size_t on_seg = none;
       const std::size_t region = locate(p, none, on_seg);
       if(on_seg != none)
-        throw Meshing_error("hole point " + std::to_string(h) + " " + pt(p) + " lies exactly on segment " +
+        throw Meshing_error("hole point " + m_d.hole_label(h) + " " + pt(p) + " lies exactly on segment " +
                             seg_str(on_seg) + ": it must be strictly inside the hole it marks");
       if(region == none) {
         std::string which;
@@ -509,7 +509,7 @@ private:
         else
           which = "it is inside none of the " + std::to_string(top.size()) + " outermost loops, e.g. not inside " +
                   loop_str(top[0]);
-        throw Meshing_error("hole point " + std::to_string(h) + " " + pt(p) + " lies outside every boundary loop: " + which);
+        throw Meshing_error("hole point " + m_d.hole_label(h) + " " + pt(p) + " lies outside every boundary loop: " + which);
       }
       m_has_hole[region] = true;
     }

@@ -153,7 +153,9 @@ public:
         names.push_back(m_input_index[i]);
         m_anchored_points.push_back(m_points[i]);
       }
-      m_anchors = internal::anchor_points(*m_tree, m_anchored_points, levels, names);
+      m_anchors = internal::anchor_points(*m_tree, m_anchored_points, levels, [&](std::size_t i) {
+        return m_domain.point_label(names[i]) + (m_domain.point_labels.empty() ? " (0-based)" : "");
+      });
       m_point_names = std::move(names);
     } else {
       m_tree->balance();
@@ -293,7 +295,7 @@ public:
         if(best_bad != std::size_t(-1))
           return restore_round(std::move(best));
         std::ostringstream msg;
-        msg << "isolated point " << m_point_names[m_lost_points.front()] << " (" << requests.front().first.x
+        msg << "isolated point " << m_domain.point_label(m_point_names[m_lost_points.front()]) << " (" << requests.front().first.x
             << ", " << requests.front().first.y << ") lies " << 2 * requests.front().second
             << " from the boundary: cells small enough to keep it a vertex inside the core are beyond the "
             << "quadtree's depth or its refinement rounds (" << m_rounds << ")";
@@ -451,7 +453,7 @@ private:
       double y = CGAL::to_double(m_traits.compute_y_2_object()(p));
       if(!std::isfinite(x) || !std::isfinite(y) || std::abs(x) > 1e150 || std::abs(y) > 1e150) {
         std::ostringstream msg;
-        msg << "input point " << i << " (" << x << ", " << y
+        msg << "input point " << m_domain.point_label(i) << " (" << x << ", " << y
             << ") is not finite or beyond 1e150 in magnitude";
         throw Meshing_error(msg.str());
       }
@@ -534,10 +536,10 @@ private:
       return min_size_level();
     std::ostringstream msg;
     msg.precision(17);
-    msg << "input points " << m_input_index[i] << " (" << m_xy[i][0] << ", " << m_xy[i][1]
-        << ") and " << m_input_index[m_nearest[i]] << " (" << m_xy[m_nearest[i]][0] << ", "
+    msg << "input points " << m_domain.point_label(m_input_index[i]) << " (" << m_xy[i][0] << ", " << m_xy[i][1]
+        << ") and " << m_domain.point_label(m_input_index[m_nearest[i]]) << " (" << m_xy[m_nearest[i]][0] << ", "
         << m_xy[m_nearest[i]][1]
-        << ") (0-based) are " << m_spacing[i] << " apart: separating them needs quadtree depth " << level
+        << ")" << (m_domain.point_labels.empty() ? " (0-based)" : "") << " are " << m_spacing[i] << " apart: separating them needs quadtree depth " << level
         << ", beyond " << m_tree->depth_limit();
     if(m_criteria.min_size() > 0)
       msg << " or the minimum size " << m_criteria.min_size();

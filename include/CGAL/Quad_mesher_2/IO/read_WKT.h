@@ -407,7 +407,15 @@ bool wkt_to_domain(Wkt_data& data, const std::string& source, Domain_2<K>& out, 
   std::vector<std::vector<Point_2> > ring_points(data.rings.size());
   for(std::size_t ri = 0; ri < data.rings.size(); ++ri) {
     Wkt_ring& r = data.rings[ri];
-    if(r.xy.size() >= 2 && r.xy.front() == r.xy.back()) { r.xy.pop_back(); r.lines.pop_back(); }
+    // an open ring is an error, not closed for the user: that would add an edge they did not give
+    if(r.xy.size() >= 2 && r.xy.front() != r.xy.back()) {
+      msg = where(r.lines.back()) + r.describe() + " is not closed: it ends at " +
+            format_point(r.xy.back()[0], r.xy.back()[1]) + " (line " + std::to_string(r.lines.back()) +
+            "), not at its first point " + format_point(r.xy.front()[0], r.xy.front()[1]) +
+            " (WKT repeats the first point of a ring at its end)";
+      return false;
+    }
+    if(r.xy.size() >= 2) { r.xy.pop_back(); r.lines.pop_back(); }
     std::size_t a = 0, b = 0;
     if(find_duplicate_point(r.xy, a, b)) {
       if(b == a + 1 || (a == 0 && b + 1 == r.xy.size())) {
@@ -438,16 +446,27 @@ bool wkt_to_domain(Wkt_data& data, const std::string& source, Domain_2<K>& out, 
   std::unordered_map<std::array<double, 2>, std::size_t, Xy_hash> index;
   std::vector<std::array<std::size_t, 2> > segs;
   std::vector<std::size_t> seg_lines;
+  // how later messages name them: vertex or edge i of its ring, from 1
+  std::vector<std::string> point_labels, segment_labels;
+  auto label = [](std::size_t i, const std::string& of, std::size_t line) {
+    return std::to_string(i + 1) + " of " + of + " (line " + std::to_string(line) + ")";
+  };
   for(const Wkt_ring& r : data.rings) {
     std::vector<std::size_t> ids(r.xy.size());
+    const std::string ring = r.describe();
     for(std::size_t i = 0; i < r.xy.size(); ++i) {
       auto ins = index.emplace(r.xy[i], xy.size());
-      if(ins.second) { xy.push_back(r.xy[i]); lines.push_back(r.lines[i]); }
+      if(ins.second) {
+        xy.push_back(r.xy[i]);
+        lines.push_back(r.lines[i]);
+        point_labels.push_back(label(i, ring, r.lines[i]));
+      }
       ids[i] = ins.first->second;
     }
     for(std::size_t i = 0; i < ids.size(); ++i) {
       segs.push_back({ids[i], ids[(i + 1) % ids.size()]});
       seg_lines.push_back(r.lines[i]);
+      segment_labels.push_back(label(i, ring, r.lines[i]));
     }
   }
   const std::size_t ring_vertices = xy.size();
@@ -462,6 +481,7 @@ bool wkt_to_domain(Wkt_data& data, const std::string& source, Domain_2<K>& out, 
     }
     xy.push_back(data.points[i]);
     lines.push_back(data.point_lines[i]);
+    point_labels.push_back(label(i, "the points", data.point_lines[i]));
   }
   std::size_t d1 = 0, d2 = 0;
   if(find_duplicate_segment(segs, d1, d2)) {
@@ -495,6 +515,8 @@ bool wkt_to_domain(Wkt_data& data, const std::string& source, Domain_2<K>& out, 
   append_points<K>(xy, out.points, k);
   out.segments = std::move(segs);
   out.holes = std::move(holes);
+  out.point_labels = std::move(point_labels);
+  out.segment_labels = std::move(segment_labels);
   return true;
 }
 
@@ -518,8 +540,8 @@ bool read_WKT_impl(std::string&& text, const std::string& source, Domain_2<K>& o
 /// `MULTIPOLYGON`, `POINT` and `MULTIPOINT` (keywords case-insensitive, `EMPTY` allowed, an
 /// EWKT `SRID=...;` prefix skipped). Only 2D coordinates are accepted (`Z`/`M` are errors).
 ///
-/// Each ring becomes a closed chain of segments (the closing repeat of the first vertex is
-/// optional). Each ring must have at least 3 distinct vertices, no repeated vertex and be
+/// Each ring becomes a closed chain of segments; it must end at its first point, as WKT
+/// asks (an open ring is an error, not closed silently). Each ring must have at least 3 distinct vertices, no repeated vertex and be
 /// simple (`CGAL::is_simple_2`). Rings may touch each other at a vertex, which is then
 /// shared; an edge shared by two rings, or a POINT equal to another point or ring vertex,
 /// is an error. For each inner ring (hole) a seed point is added to `out.holes`: it lies

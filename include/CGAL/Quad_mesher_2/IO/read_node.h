@@ -341,6 +341,19 @@ struct Vertex_list
 
 inline std::string base_name(std::size_t base) { return base == 0 ? "0-based" : "1-based"; }
 
+// How messages after reading name the item of each line: its number in the file (from
+// `base`) and its line, in `file` if that is not the file being read.
+inline std::vector<std::string> file_labels(std::size_t base, const std::vector<std::size_t>& lines,
+                                            const std::string& file = std::string())
+{
+  std::vector<std::string> labels;
+  labels.reserve(lines.size());
+  const std::string in = file.empty() ? std::string(" (line ") : " (" + file + " line ";
+  for(std::size_t i = 0; i < lines.size(); ++i)
+    labels.push_back(std::to_string(i + base) + in + std::to_string(lines[i]) + ")");
+  return labels;
+}
+
 /// Reads the vertex header (`<#vertices> [<dimension> [<#attributes> [<#markers>]]]`,
 /// missing fields default to 2, 0, 0 as in Triangle) and, if the count is not zero, the
 /// vertices. `count` receives the announced number of vertices.
@@ -466,6 +479,7 @@ bool read_node_impl(std::string&& text, const std::string& source, Domain_2<K>& 
     Vertex_list v;
     if(read_node_text(r, v, msg, duplicates)) {
       append_points<K>(v.xy, out.points);
+      out.point_labels = file_labels(v.base, v.lines);
       return true;
     }
     return false;

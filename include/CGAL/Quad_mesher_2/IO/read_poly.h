@@ -130,6 +130,7 @@ bool read_poly_text(Text_lines& r, const std::string& node_file, Domain_2<K>& ou
   if(r.size() > 1) { msg = r.here() + "unexpected text " + quote(r[1]) + " after the hole header"; return false; }
   const std::size_t nh = static_cast<std::size_t>(nholes);
   std::vector<std::array<double, 2> > holes;
+  std::vector<std::size_t> hole_lines;
   holes.reserve((std::min)(nh, cap));
   std::size_t hole_base = 0;
   for(std::size_t i = 0; i < nh; ++i) {
@@ -158,12 +159,16 @@ bool read_poly_text(Text_lines& r, const std::string& node_file, Domain_2<K>& ou
     }
     if(r.size() > 3) { msg = r.here() + "unexpected text " + quote(r[3]) + " after hole " + std::string(r[0]); return false; }
     holes.push_back({x, y});
+    hole_lines.push_back(r.line());
   }
   // An optional regional-attributes section may follow; it is ignored.
 
   append_points<K>(v.xy, out.points);
   out.segments = std::move(segs);
   append_points<K>(holes, out.holes);
+  out.point_labels = file_labels(base, v.lines, count == 0 ? node_file : std::string());
+  out.segment_labels = file_labels(seg_base, seg_lines);
+  out.hole_labels = file_labels(hole_base, hole_lines);
   return true;
 }
 

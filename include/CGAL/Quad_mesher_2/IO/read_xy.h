@@ -76,6 +76,7 @@ bool read_xy_impl(std::string&& text, const std::string& source, Domain_2<K>& ou
     }
     if(ok) {
       append_points<K>(v.xy, out.points);
+      out.point_labels = file_labels(v.base, v.lines);
       return true;
     }
     return false;

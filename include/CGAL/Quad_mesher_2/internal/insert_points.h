@@ -93,11 +93,11 @@ bool choose_anchor(const Tree& tree, const Point_2& p, int level, Point_anchor& 
 
 // Refines `tree` until every anchor's block is as required, deepening the anchors whose
 // block is crowded (split cells, another anchor's cells, or the grid's edge). Balances the
-// tree. `levels[i]` is the first base level tried for points[i]; `names[i]` is its index in
-// the user's input, for messages.
-template <class Tree, class PointRange>
+// tree. `levels[i]` is the first base level tried for points[i]; `name(i)` is how the user
+// knows it, for messages.
+template <class Tree, class PointRange, class PointName>
 std::vector<Point_anchor> anchor_points(Tree& tree, const PointRange& points, std::vector<int> levels,
-                                        const std::vector<std::size_t>& names)
+                                        const PointName& name)
 {
   const std::size_t n = points.size();
   std::vector<Point_anchor> anchors(n);
@@ -106,7 +106,7 @@ std::vector<Point_anchor> anchor_points(Tree& tree, const PointRange& points, st
     anchors[i].point = i;
   auto too_deep = [&](std::size_t i) {
     std::ostringstream msg;
-    msg << "input point " << names[i] << " (0-based) cannot be made a mesh vertex within "
+    msg << "input point " << name(i) << " cannot be made a mesh vertex within "
         << tree.depth_limit() << ": it is too close to another input point";
     return Meshing_error(msg.str());
   };
