@@ -588,8 +588,37 @@ private:
           << "; coarsen it or raise the cell budget";
       throw Meshing_error(msg.str());
     }
-    m_tree->refine([&](const Cell_key& k) { return k.level < level && !outside_domain_box(k); });
+    if(m_domain.is_point_cloud()) {
+      m_tree->refine([&](const Cell_key& k) { return k.level < level; });
+      return;
+    }
+    // A cell wholly outside the domain is cleared anyway: it stays as it is (balance grades
+    // it), which saves the quarter of the cells that a disc's box holds outside the disc.
+    // A cell that no segment meets lies on one side, which its parent's tells, or its centre.
+    enum Side : unsigned char { UNKNOWN, INSIDE, OUTSIDE };
+    const internal::Domain_segments<GeomTraits> boundary(m_domain, m_loops, m_traits);
+    auto meets_boundary = [&](const Cell_key& k) { // by boxes: it may say yes too often
+      bool any = false;
+      boundary.query(m_tree->cell_rectangle(k).bbox(), [&](std::size_t) { any = true; });
+      return any;
+    };
+    std::vector<std::pair<Cell_key, Side>> stack;
+    for(const Cell_key& k : m_tree->leaves()) stack.emplace_back(k, UNKNOWN);
+    while(!stack.empty()) {
+      auto [k, side] = stack.back();
+      stack.pop_back();
+      if(k.level >= level || !m_tree->is_leaf(k) || outside_domain_box(k))
+        continue;
+      if(side == UNKNOWN && !meets_boundary(k))
+        side = boundary.in_domain(m_tree->cell_center(k)) ? INSIDE : OUTSIDE;
+      if(side == OUTSIDE)
+        continue;
+      m_tree->split(k);
+      for(int dy = 0; dy < 2; ++dy)
+        for(int dx = 0; dx < 2; ++dx) stack.emplace_back(k.child(dx, dy), side);
+    }
   }
+
 
   // A domain's mesh lies within the bounding box of its points: cells wholly outside it are
   // cleared anyway, so the size bounds are not applied there (the power-of-two root square

@@ -98,6 +98,86 @@ struct Clearance_result
   std::size_t removed_outside = 0, removed_intersecting = 0, removed_near = 0, removed_single = 0;
 };
 
+// The domain's boundary segments, loop by loop, in a box hierarchy: the segments a box
+// meets, and the side of the boundary a point on no segment lies on (exact predicates).
+template <class K>
+class Domain_segments
+{
+  typedef typename K::Point_2 Point_2;
+  typedef typename K::Segment_2 Segment_2;
+
+public:
+  Domain_segments(const Domain_2<K>& domain, const Domain_loops_2<K>& loops, const K& traits)
+    : m_domain(domain), m_loops(loops), m_traits(traits)
+  {
+    const auto bbox = m_traits.construct_bbox_2_object();
+    const auto seg = m_traits.construct_segment_2_object();
+    for(std::size_t l = 0; l < m_loops.loops.size(); ++l) {
+      const auto& v = m_loops.loops[l].vertices;
+      for(std::size_t i = 0; i < v.size(); ++i) {
+        const Point_2& a = m_domain.points[v[i]];
+        const Point_2& b = m_domain.points[v[(i + 1) % v.size()]];
+        m_ends.push_back({v[i], v[(i + 1) % v.size()]});
+        m_segments.push_back(seg(a, b));
+        m_loop.push_back(l);
+        m_boxes.push_back(bbox(a) + bbox(b));
+      }
+    }
+    m_tree.reset(new Loops_box_tree(m_boxes));
+  }
+  Domain_segments(const Domain_segments&) = delete;
+  Domain_segments& operator=(const Domain_segments&) = delete;
+
+  const Point_2& point(std::size_t s, int e) const { return m_domain.points[m_ends[s][e]]; }
+  const Segment_2& segment(std::size_t s) const { return m_segments[s]; }
+  const Bbox_2& box(std::size_t s) const { return m_boxes[s]; }
+
+  /// calls `f(s)` for every segment `s` whose box overlaps `b`
+  template <class F>
+  void query(const Bbox_2& b, F&& f) const { m_tree->query(b, std::forward<F>(f)); }
+
+  /// `true` if `p`, which lies on no segment, is inside the domain: the innermost loop whose
+  /// inside holds `p` (upward ray, half-open crossing rule) must be an outer loop.
+  bool in_domain(const Point_2& p) const
+  {
+    const auto cmp_x = m_traits.compare_x_2_object();
+    const auto orient = m_traits.orientation_2_object();
+    const Bbox_2 pb = m_traits.construct_bbox_2_object()(p);
+    const Bbox_2 ray(pb.xmin(), pb.ymin(), pb.xmax(), std::numeric_limits<double>::infinity());
+    std::vector<unsigned char> parity(m_loops.loops.size(), 0);
+    m_tree->query(ray, [&](std::size_t s) {
+      const Point_2& a = point(s, 0);
+      const Point_2& b = point(s, 1);
+      const Comparison_result ca = cmp_x(a, p), cb = cmp_x(b, p);
+      const bool spans = (ca != LARGER && cb == LARGER) || (cb != LARGER && ca == LARGER);
+      if(!spans) return;
+      const Point_2& left = (ca == LARGER) ? b : a;
+      const Point_2& right = (ca == LARGER) ? a : b;
+      const Orientation o = orient(left, right, p);
+      CGAL_assertion(o != COLLINEAR);  // p is on no segment
+      if(o == RIGHT_TURN) parity[m_loop[s]] ^= 1;  // p below the segment
+    });
+    int depth = -1;
+    bool inside = false;
+    for(std::size_t l = 0; l < parity.size(); ++l)
+      if(parity[l] && m_loops.loops[l].depth > depth) {
+        depth = m_loops.loops[l].depth;
+        inside = m_loops.loops[l].is_outer;
+      }
+    return inside;
+  }
+
+private:
+  const Domain_2<K>& m_domain;
+  const Domain_loops_2<K>& m_loops;
+  const K& m_traits;
+  std::vector<std::array<std::size_t, 2>> m_ends;
+  std::vector<Segment_2> m_segments;
+  std::vector<std::size_t> m_loop;
+  std::vector<Bbox_2> m_boxes;
+  std::unique_ptr<Loops_box_tree> m_tree; // keeps a reference to m_boxes
+};
+
 template <class K>
 class Buffer_zone_clearance
 {
@@ -117,7 +197,8 @@ class Buffer_zone_clearance
 public:
   Buffer_zone_clearance(const Mesh& mesh, const std::vector<double>& quad_size, const Domain_2<K>& domain,
                         const Domain_loops_2<K>& loops, const K& traits)
-    : m_mesh(mesh), m_size(quad_size), m_domain(domain), m_loops(loops), m_traits(traits)
+    : m_mesh(mesh), m_size(quad_size), m_domain(domain), m_loops(loops), m_traits(traits),
+      m_boundary(domain, loops, traits)
   {
     CGAL_precondition(quad_size.size() == mesh.quads.size());
     CGAL_precondition(mesh.quads.size() < none / 4 && mesh.points.size() < none);
@@ -127,7 +208,6 @@ public:
   {
     const std::size_t nq = m_mesh.quads.size();
     m_state.assign(nq, KEPT);
-    build_segments();
     remove_intersecting();
     remove_outside();
     remove_near();
@@ -137,32 +217,11 @@ public:
   }
 
 private:
-  // ---- boundary segments and their box hierarchy -------------------------------------------
-  void build_segments()
-  {
-    const auto bbox = m_traits.construct_bbox_2_object();
-    const auto seg = m_traits.construct_segment_2_object();
-    for(std::size_t l = 0; l < m_loops.loops.size(); ++l) {
-      const auto& v = m_loops.loops[l].vertices;
-      for(std::size_t i = 0; i < v.size(); ++i) {
-        const Point_2& a = m_domain.points[v[i]];
-        const Point_2& b = m_domain.points[v[(i + 1) % v.size()]];
-        m_seg_ends.push_back({v[i], v[(i + 1) % v.size()]});
-        m_segments.push_back(seg(a, b));
-        m_seg_loop.push_back(l);
-        m_seg_boxes.push_back(bbox(a) + bbox(b));
-      }
-    }
-    m_tree.reset(new Loops_box_tree(m_seg_boxes));
-  }
-
-  const Point_2& seg_point(std::size_t s, int e) const { return m_domain.points[m_seg_ends[s][e]]; }
-
   // The segments whose box overlaps `box`, into m_candidates.
   void find_candidates(const Bbox_2& box)
   {
     m_candidates.clear();
-    m_tree->query(box, [&](std::size_t s) { m_candidates.push_back(s); });
+    m_boundary.query(box, [&](std::size_t s) { m_candidates.push_back(s); });
   }
 
   // ---- adjacency of the quads kept by criteria 1-3 ----------------------------------------
@@ -217,8 +276,8 @@ private:
   {
     const auto orient = m_traits.orientation_2_object();
     const auto& quad = m_mesh.quads[q];
-    const Point_2& a = seg_point(s, 0);
-    const Point_2& b = seg_point(s, 1);
+    const Point_2& a = m_boundary.point(s, 0);
+    const Point_2& b = m_boundary.point(s, 1);
     for(int e = 0; e < 4; ++e) {
       const Point_2& p = m_mesh.points[quad[e]];
       const Point_2& r = m_mesh.points[quad[(e + 1) % 4]];
@@ -246,7 +305,7 @@ private:
       // The candidates of each quad are those the tree would give it alone.
       for(std::size_t i = 0; i < n; ++i)
         for(std::size_t s : m_candidates)
-          if(CGAL::do_overlap(boxes[i], m_seg_boxes[s]) && quad_meets_segment(q0 + i, s)) {
+          if(CGAL::do_overlap(boxes[i], m_boundary.box(s)) && quad_meets_segment(q0 + i, s)) {
             m_state[q0 + i] = INTERSECTING;
             break;
           }
@@ -254,37 +313,6 @@ private:
   }
 
   // ---- criterion 1 -------------------------------------------------------------------------
-  // `true` if `p`, which lies on no segment, is inside the domain: the innermost loop whose
-  // inside holds `p` (upward ray, half-open crossing rule) must be an outer loop.
-  bool in_domain(const Point_2& p) const
-  {
-    const auto cmp_x = m_traits.compare_x_2_object();
-    const auto orient = m_traits.orientation_2_object();
-    const Bbox_2 pb = m_traits.construct_bbox_2_object()(p);
-    const Bbox_2 ray(pb.xmin(), pb.ymin(), pb.xmax(), std::numeric_limits<double>::infinity());
-    std::vector<unsigned char> parity(m_loops.loops.size(), 0);
-    m_tree->query(ray, [&](std::size_t s) {
-      const Point_2& a = seg_point(s, 0);
-      const Point_2& b = seg_point(s, 1);
-      const Comparison_result ca = cmp_x(a, p), cb = cmp_x(b, p);
-      const bool spans = (ca != LARGER && cb == LARGER) || (cb != LARGER && ca == LARGER);
-      if(!spans) return;
-      const Point_2& left = (ca == LARGER) ? b : a;
-      const Point_2& right = (ca == LARGER) ? a : b;
-      const Orientation o = orient(left, right, p);
-      CGAL_assertion(o != COLLINEAR);  // p is on no segment
-      if(o == RIGHT_TURN) parity[m_seg_loop[s]] ^= 1;  // p below the segment
-    });
-    int depth = -1;
-    bool inside = false;
-    for(std::size_t l = 0; l < parity.size(); ++l)
-      if(parity[l] && m_loops.loops[l].depth > depth) {
-        depth = m_loops.loops[l].depth;
-        inside = m_loops.loops[l].is_outer;
-      }
-    return inside;
-  }
-
   void remove_outside()
   {
     // Two quads that meet no segment and share a vertex are on the same side of the boundary
@@ -298,7 +326,7 @@ private:
       int c = 0;
       while(c < 4 && owner[quad[c]] == none) ++c;
       if(c < 4) m_state[q] = m_state[owner[quad[c]]];
-      else if(!in_domain(m_mesh.points[quad[0]])) m_state[q] = OUTSIDE;
+      else if(!m_boundary.in_domain(m_mesh.points[quad[0]])) m_state[q] = OUTSIDE;
       for(c = 0; c < 4; ++c) owner[quad[c]] = Index(q);
     }
   }
@@ -336,7 +364,7 @@ private:
         const FT eps_ft(eps[v0 + i]);
         const FT eps2 = eps_ft * eps_ft;
         for(std::size_t s : m_candidates)
-          if(CGAL::do_overlap(boxes[i], m_seg_boxes[s]) && cmp_dist(m_mesh.points[v0 + i], m_segments[s], eps2) != LARGER) {
+          if(CGAL::do_overlap(boxes[i], m_boundary.box(s)) && cmp_dist(m_mesh.points[v0 + i], m_boundary.segment(s), eps2) != LARGER) {
             near[v0 + i] = 1;
             break;
           }
@@ -500,11 +528,7 @@ private:
   const Domain_loops_2<K>& m_loops;
   const K& m_traits;
   std::vector<State> m_state;
-  std::vector<std::array<std::size_t, 2>> m_seg_ends;
-  std::vector<Segment_2> m_segments;
-  std::vector<std::size_t> m_seg_loop;
-  std::vector<Bbox_2> m_seg_boxes;
-  std::unique_ptr<Loops_box_tree> m_tree;
+  Domain_segments<K> m_boundary;
   std::vector<std::size_t> m_candidates;
   std::vector<Index> m_nb;
   std::vector<Index> m_vq_begin, m_vq;
