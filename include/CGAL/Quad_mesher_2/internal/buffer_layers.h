@@ -681,7 +681,9 @@ public:
       if(!is_input_vertex(v))
         movable.push_back(v);
     // (invalid quads around v, quads outside [45, 135] around it, the worst deviation from
-    // 90 degrees), compared in this order: no move may make a quad invalid
+    // 90 degrees), compared in this order: no move may make a quad invalid. A move must lower
+    // the worst by more than rounding: 1e-9 degrees is within it on small cells far from the
+    // origin, where moves that gain nothing made a translated domain's mesh differ.
     struct Local
     {
       int invalid = 0, out = 0;
@@ -690,7 +692,7 @@ public:
       {
         if(invalid != o.invalid) return invalid < o.invalid;
         if(out != o.out) return out < o.out;
-        return worst < o.worst - 1e-9;
+        return worst < o.worst - 1e-6;
       }
     };
     const double min_edge = 1e-8 * m_locator->diagonal();
