@@ -195,6 +195,7 @@ int run(const Options& opt)
     const auto& b = mesher.buffer_report();
     report["buffer"] = { { "refinement_rounds", mesher.rounds() - 1 },
                          { "notches_moved", b.moved_notches },
+                         { "notches_filled", b.filled_notches },
                          { "first_layer_quads", b.first_layer_quads },
                          { "second_layer_quads", b.second_layer_quads },
                          { "quads_outside_45_135_not_forced", b.bad_angle_quads } };

@@ -19,6 +19,8 @@
 //    at B in [45°, 135°], raises the smallest buffer-side angle at B and its two neighbours and
 //    keeps B and its boundary edges at least h(B)/4 from the boundary. On a uniform staircase
 //    the moved notches fall on the line through the convex corners: every beta becomes 180°.
+//    A notch that cannot move (a core angle of 45° at it) gets a new core quad over it, its
+//    fourth corner on the bisector, which leaves about the angles the move would have.
 // 3. First buffer layer (§4.5): B's first buffer point F lies halfway (in distance to the
 //    boundary) between B and the boundary, along the mean of the bisector of beta and the
 //    direction to the nearest boundary point; each F then moves alone to improve its two
@@ -345,6 +347,7 @@ inline double quad_badness(const std::array<Point_2d, 4>& q)
 struct Buffer_report
 {
   std::size_t moved_notches = 0;
+  std::size_t filled_notches = 0;
   std::size_t first_layer_quads = 0;
   std::size_t second_layer_quads = 0;
   std::size_t invalid_quads = 0;
@@ -443,6 +446,15 @@ public:
       }
       if(!changed) break;
     }
+  }
+
+  /// Stage "templates", after relax_notches(): a new core quad over each notch that could not
+  /// move (see fill_notch()).
+  void fill_notches()
+  {
+    for(std::size_t c = 0; c < m_cycles.size(); ++c)
+      for(std::size_t i = 0; i < m_cycles[c].size(); ++i)
+        fill_notch(c, i);
   }
 
   /// Stage "buffer1": the first buffer points and the quads B_i F_i F_{i+1} B_{i+1}.
@@ -852,6 +864,67 @@ public:
   }
 
 private:
+  // how far a buffer-side angle lies outside [112.5, 225], the range the paper's templates
+  // leave (Lemma 2): there the first layer's two quads at the vertex split it within [45, 135]
+  static double buffer_angle_excess(double beta)
+  {
+    return (std::max)(0.0, beta - 225.0) + (std::max)(0.0, 112.5 - beta);
+  }
+
+  // A notch (buffer-side angle under 112.5 degrees) that relax_notches() left cannot move: a
+  // core angle of 45 degrees at it (the centre of a cell's template, or a transition
+  // template's corner) would go below. Its two first-layer quads would split 90 degrees, 45
+  // each at best (Lake Superior's (0.8877, -0.6432): 44.9). A new core quad B A Y C over it,
+  // Y on the bisector (paper §4.4: templates also fill the buffer with new quads), takes B off
+  // the boundary: with Y where the quad has a little under 135 degrees, A and C lose about
+  // 67.5 degrees of buffer side each and Y has about 225, the angles template 1(a) gives by
+  // moving B there. Kept if the quad is within [45, 135], its new edges keep the clearance,
+  // and the buffer-side angles at A, Y and C come nearer [112.5, 225] than before.
+  void fill_notch(std::size_t c, std::size_t i)
+  {
+    auto& cyc = m_cycles[c];
+    const std::size_t n = cyc.size();
+    const std::size_t a2 = cyc[(i + n - 2) % n], a = cyc[(i + n - 1) % n], b = cyc[i];
+    const std::size_t c1 = cyc[(i + 1) % n], c2 = cyc[(i + 2) % n];
+    const double beta = right_side_angle(m_xy[a], m_xy[b], m_xy[c1]);
+    if(beta >= 112.5 - 1e-9) return;
+    const double before = (std::max)({ buffer_angle_excess(right_side_angle(m_xy[a2], m_xy[a], m_xy[b])),
+                                       buffer_angle_excess(beta),
+                                       buffer_angle_excess(right_side_angle(m_xy[b], m_xy[c1], m_xy[c2])) });
+    const Point_2d d = right_bisector(m_xy[a], m_xy[b], m_xy[c1]);
+    const double s = 0.5 * (length_2d(minus_2d(m_xy[a], m_xy[b])) + length_2d(minus_2d(m_xy[c1], m_xy[b])));
+    const double clear = 0.25 * m_size[b];
+    // a candidate must gain more than rounding: the choice is the same on a scaled domain
+    double best = before;
+    Point_2d best_y{ 0, 0 };
+    bool found = false;
+    // |BY| = 1.01 s: at s (template 1(a)'s 0.71 s diagonal) a lattice notch's quad has exactly
+    // 135 degrees at Y, in or out by rounding, and the runs of a scaled domain differed
+    for(double f : { 1.01, 1.1, 0.9, 1.2, 0.8 }) {
+      const Point_2d y{ m_xy[b].x + f * s * d.x, m_xy[b].y + f * s * d.y };
+      if(quad_badness({ m_xy[b], m_xy[a], y, m_xy[c1] }) > 45.0 + 1e-9) continue;
+      const double after = (std::max)({ buffer_angle_excess(right_side_angle(m_xy[a2], m_xy[a], y)),
+                                        buffer_angle_excess(right_side_angle(m_xy[a], y, m_xy[c1])),
+                                        buffer_angle_excess(right_side_angle(y, m_xy[c1], m_xy[c2])) });
+      if(after < best - 1e-6 && m_locator->segment_distance(m_xy[a], y, clear) > clear
+         && m_locator->segment_distance(y, m_xy[c1], clear) > clear) {
+        best = after;
+        best_y = y;
+        found = true;
+      }
+    }
+    if(!found) return;
+    // Y is a core point like the others (the first buffer points come after the core's)
+    const std::size_t y = add_point(best_y);
+    m_size.push_back(m_size[b]);
+    m_on_cycle.push_back(1);
+    m_on_cycle[b] = 0;
+    m_core_points = m_mesh.points.size();
+    add_quad({ b, a, y, c1 });
+    cyc[i] = y;
+    ++m_report.filled_notches;
+  }
+
   // Beside an input corner, v turns about it to share the corner's angle evenly between the
   // two quads it separates there (the paper's rotated bisectors, §5): one target per corner.
   void add_turns_about_corners(std::size_t v, const Vertex_quads& quads_at,
