@@ -1145,9 +1145,11 @@ private:
     std::array<Point_2d, 4> P;
     for(int k = 0; k < 4; ++k) P[k] = m_xy[q[k]];
     double b = quad_badness(P);
-    // an angle an input corner alpha forces is not the strip's fault, and the quad's other
-    // angles may use [alpha, 180 - alpha]: their deviation from 90 is scaled so that this range
-    // costs what [45, 135] costs elsewhere
+    // an angle an input corner alpha forces is not the strip's fault: the quad is judged by its
+    // other three, which fit in [45, 135] (they sum to 360 - alpha; with [alpha, 180 - alpha]
+    // costing what [45, 135] costs elsewhere, as the paper allows, bird's 11.5-degree tip kept
+    // 138.8). Beyond 45 their deviation still counts less than elsewhere, as it did: on a
+    // needle's tip they cannot all fit.
     if(b < 1000.0)
       for(int k = 0; k < 4; ++k)
         if(input_corner_angle(q[k]) < 45.0 // cheap test first: the cost runs in inner loops
@@ -1155,8 +1157,10 @@ private:
           const double scale = 45.0 / (90.0 - input_corner_angle(q[k]));
           b = 0;
           for(int j = 0; j < 4; ++j)
-            if(j != k)
-              b = (std::max)(b, scale * std::abs(corner_angle_degrees(P[(j + 3) % 4], P[j], P[(j + 1) % 4]) - 90.0));
+            if(j != k) {
+              const double d = std::abs(corner_angle_degrees(P[(j + 3) % 4], P[j], P[(j + 1) % 4]) - 90.0);
+              b = (std::max)(b, d <= 45.0 ? d : 45.0 + scale * (d - 45.0));
+            }
           break;
         }
     return b;
