@@ -646,7 +646,7 @@ public:
         for(int c = 0; c < 4; ++c)
           if(forced_angle(Q[c], a[c])) lo = (std::min)(lo, input_corner_angle(Q[c]));
         for(int c = 0; c < 4; ++c)
-          if((a[c] < lo - angle_tolerance || a[c] > 180.0 - lo + angle_tolerance) && !forced_angle(Q[c], a[c]))
+          if((a[c] < lo - verifier_slack || a[c] > 180.0 - lo + verifier_slack) && !forced_angle(Q[c], a[c]))
             bad_angle = true;
       }
       if(!valid) ++m_report.invalid_quads;
@@ -1014,6 +1014,9 @@ private:
   // core angle is exactly 135 degrees: a disc scaled by 2^-14 and moved to (3, 0.5) was
   // refined elsewhere)
   static constexpr double angle_tolerance = 1e-6;
+  // The final check of the buffer quads is no looser than verify_mesh.py's range slack: a
+  // quad passed here is one it passes.
+  static constexpr double verifier_slack = 1e-7;
 
   // for a sliding boundary point, moves `p` onto its edge strictly between its neighbours;
   // false if there is no room
