@@ -26,8 +26,9 @@
 //    the notches; last, a vertex within range moves either way if a neighbour is still out.
 //    On a 45° staircase the corners cut first leave 225° and 135°; notches opened first would
 //    flatten the corners between them, and every other notch stayed at 90°.
-//    A notch that still cannot move (a core angle of 45° at it) gets a new core quad over it,
-//    its fourth corner on the bisector, which leaves about the angles the move would have.
+//    A notch under 95° that still cannot move (a core angle of 45° at it) gets a new core quad
+//    over it, its fourth corner on the bisector, which leaves about the angles the move would
+//    have; not where the notch faces a corner that needs a fan of three (it is the fan's room).
 // 3. First buffer layer (§4.5): B's first buffer point F lies halfway (in distance to the
 //    boundary) between B and the boundary, along the mean of the bisector of beta and the
 //    direction to the nearest boundary point; each F then moves alone to improve its two
@@ -907,6 +908,13 @@ private:
   // 67.5 degrees of buffer side each and Y has about 225, the angles template 1(a) gives by
   // moving B there. Kept if the quad is within [45, 135], its new edges keep the clearance,
   // and the buffer-side angles at A, Y and C come nearer [112.5, 225] than before.
+  // Only notches under 95 degrees are filled: from there the first layer splits beta in two
+  // quads over 45 degrees each, and a new quad over such a notch (100 to 112 degrees, most of
+  // them transition templates) changed the strip's pairing for the worse
+  // (airfoil_3elem_jigsaw's (0.5, 0.906): a sheared ladder at the nearby corner). Nor is a notch
+  // that faces a corner needing a fan of three (its nearest boundary point is that corner): the
+  // notch is the fan's room, and filling it left the fan's quads squeezed (the 30P30N main
+  // element's trailing edge, bird's tip).
   void fill_notch(std::size_t c, std::size_t i)
   {
     auto& cyc = m_cycles[c];
@@ -914,7 +922,14 @@ private:
     const std::size_t a2 = cyc[(i + n - 2) % n], a = cyc[(i + n - 1) % n], b = cyc[i];
     const std::size_t c1 = cyc[(i + 1) % n], c2 = cyc[(i + 2) % n];
     const double beta = right_side_angle(m_xy[a], m_xy[b], m_xy[c1]);
-    if(beta >= 112.5 - 1e-9) return;
+    if(beta >= 95.0) return;
+    {
+      const Loop_locator::Hit h = m_locator->closest(m_xy[b], 2 * m_size[b]);
+      const std::size_t nv = m_locator->loop(h.loop).size();
+      if((h.t <= 0 && needs_fan_of_three(h.loop, h.edge))
+         || (h.t >= 1 && needs_fan_of_three(h.loop, (h.edge + 1) % nv)))
+        return;
+    }
     const double before = (std::max)({ buffer_angle_excess(right_side_angle(m_xy[a2], m_xy[a], m_xy[b])),
                                        buffer_angle_excess(beta),
                                        buffer_angle_excess(right_side_angle(m_xy[b], m_xy[c1], m_xy[c2])) });
