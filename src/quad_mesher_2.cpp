@@ -196,6 +196,7 @@ int run(const Options& opt)
     report["buffer"] = { { "refinement_rounds", mesher.rounds() - 1 },
                          { "notches_moved", b.moved_notches },
                          { "corners_cut", b.cut_corners },
+                         { "notches_filled", b.filled_notches },
                          { "first_layer_quads", b.first_layer_quads },
                          { "second_layer_quads", b.second_layer_quads },
                          { "quads_outside_45_135_not_forced", b.bad_angle_quads } };

@@ -44,8 +44,9 @@ enum class Stage
             ///< mesh vertex (paper §3, Lemma 1)
   CLEARANCE, ///< domains only: quads outside, crossing or too near the boundary removed, leaving
              ///< the core mesh and an empty buffer zone (paper §4.3, Fig. 3(c))
-  TEMPLATES, ///< domains only: notches of the core boundary opened and its convex corners cut so
-             ///< that every boundary angle is in [112.5°, 225°] where the core allows (paper §4.4)
+  TEMPLATES, ///< domains only: notches of the core boundary opened (moved, or covered by a new
+             ///< quad) and its convex corners cut so that every boundary angle is in
+             ///< [112.5°, 225°] where the core allows (paper §4.4)
   BUFFER1,   ///< domains only: the first buffer layer, on angle bisectors (paper §4.5)
   BUFFER2    ///< domains only: the second buffer layer, reaching the boundary; the whole domain
              ///< is meshed and every boundary vertex is a mesh vertex (paper §4.6)
@@ -240,8 +241,10 @@ public:
     auto start = std::chrono::steady_clock::now();
     internal::Buffer_layers<GeomTraits> layers(mesh, m_core_vertex_size, m_domain, m_loops, m_traits);
     bool ok = layers.match_loops();
-    if(ok && last >= Stage::TEMPLATES)
+    if(ok && last >= Stage::TEMPLATES) {
       layers.apply_boundary_templates();
+      layers.fill_notches();
+    }
     if(ok && last >= Stage::BUFFER1)
       layers.build_first_layer();
     if(ok && last >= Stage::BUFFER2)

@@ -26,6 +26,9 @@
 //    the notches; last, a vertex within range moves either way if a neighbour is still out.
 //    On a 45° staircase the corners cut first leave 225° and 135°; notches opened first would
 //    flatten the corners between them, and every other notch stayed at 90°.
+//    A notch under 95° that still cannot move (a core angle of 45° at it) gets a new core quad
+//    over it, its fourth corner on the bisector, which leaves about the angles the move would
+//    have; not where the notch faces a corner that needs a fan of three (it is the fan's room).
 // 3. First buffer layer (§4.5): B's first buffer point F lies halfway (in distance to the
 //    boundary) between B and the boundary, along the mean of the bisector of beta and the
 //    direction to the nearest boundary point; each F then moves alone to improve its two
@@ -359,6 +362,7 @@ struct Buffer_report
   /// core boundary vertices moved out into the buffer (notches opened), and in (corners cut)
   std::size_t moved_notches = 0;
   std::size_t cut_corners = 0;
+  std::size_t filled_notches = 0;
   std::size_t first_layer_quads = 0;
   std::size_t second_layer_quads = 0;
   std::size_t invalid_quads = 0;
@@ -464,6 +468,15 @@ public:
         }
         if(!changed) break;
       }
+  }
+
+  /// Stage "templates", after apply_boundary_templates(): a new core quad over each notch that could not
+  /// move (see fill_notch()).
+  void fill_notches()
+  {
+    for(std::size_t c = 0; c < m_cycles.size(); ++c)
+      for(std::size_t i = 0; i < m_cycles[c].size(); ++i)
+        fill_notch(c, i);
   }
 
   /// Stage "buffer1": the first buffer points and the quads B_i F_i F_{i+1} B_{i+1}.
@@ -702,7 +715,9 @@ public:
       if(!is_input_vertex(v))
         movable.push_back(v);
     // (invalid quads around v, quads outside [45, 135] around it, the worst deviation from
-    // 90 degrees), compared in this order: no move may make a quad invalid
+    // 90 degrees), compared in this order: no move may make a quad invalid. A move must lower
+    // the worst by more than rounding: 1e-9 degrees is within it on small cells far from the
+    // origin, where moves that gain nothing made a translated domain's mesh differ.
     struct Local
     {
       int invalid = 0, out = 0;
@@ -877,6 +892,81 @@ public:
   }
 
 private:
+  // how far a buffer-side angle lies outside [112.5, 225], the range the paper's templates
+  // leave (Lemma 2): there the first layer's two quads at the vertex split it within [45, 135]
+  static double buffer_angle_excess(double beta)
+  {
+    return (std::max)(0.0, beta - 225.0) + (std::max)(0.0, 112.5 - beta);
+  }
+
+  // A notch (buffer-side angle under 112.5 degrees) that apply_boundary_templates() left cannot move: a
+  // core angle of 45 degrees at it (the centre of a cell's template, or a transition
+  // template's corner) would go below. Its two first-layer quads would split 90 degrees, 45
+  // each at best (Lake Superior's (0.8877, -0.6432): 44.9). A new core quad B A Y C over it,
+  // Y on the bisector (paper §4.4: templates also fill the buffer with new quads), takes B off
+  // the boundary: with Y where the quad has a little under 135 degrees, A and C lose about
+  // 67.5 degrees of buffer side each and Y has about 225, the angles template 1(a) gives by
+  // moving B there. Kept if the quad is within [45, 135], its new edges keep the clearance,
+  // and the buffer-side angles at A, Y and C come nearer [112.5, 225] than before.
+  // Only notches under 95 degrees are filled: from there the first layer splits beta in two
+  // quads over 45 degrees each, and a new quad over such a notch (100 to 112 degrees, most of
+  // them transition templates) changed the strip's pairing for the worse
+  // (airfoil_3elem_jigsaw's (0.5, 0.906): a sheared ladder at the nearby corner). Nor is a notch
+  // that faces a corner needing a fan of three (its nearest boundary point is that corner): the
+  // notch is the fan's room, and filling it left the fan's quads squeezed (the 30P30N main
+  // element's trailing edge, bird's tip).
+  void fill_notch(std::size_t c, std::size_t i)
+  {
+    auto& cyc = m_cycles[c];
+    const std::size_t n = cyc.size();
+    const std::size_t a2 = cyc[(i + n - 2) % n], a = cyc[(i + n - 1) % n], b = cyc[i];
+    const std::size_t c1 = cyc[(i + 1) % n], c2 = cyc[(i + 2) % n];
+    const double beta = right_side_angle(m_xy[a], m_xy[b], m_xy[c1]);
+    if(beta >= 95.0) return;
+    {
+      const Loop_locator::Hit h = m_locator->closest(m_xy[b], 2 * m_size[b]);
+      const std::size_t nv = m_locator->loop(h.loop).size();
+      if((h.t <= 0 && needs_fan_of_three(h.loop, h.edge))
+         || (h.t >= 1 && needs_fan_of_three(h.loop, (h.edge + 1) % nv)))
+        return;
+    }
+    const double before = (std::max)({ buffer_angle_excess(right_side_angle(m_xy[a2], m_xy[a], m_xy[b])),
+                                       buffer_angle_excess(beta),
+                                       buffer_angle_excess(right_side_angle(m_xy[b], m_xy[c1], m_xy[c2])) });
+    const Point_2d d = right_bisector(m_xy[a], m_xy[b], m_xy[c1]);
+    const double s = 0.5 * (length_2d(minus_2d(m_xy[a], m_xy[b])) + length_2d(minus_2d(m_xy[c1], m_xy[b])));
+    const double clear = 0.25 * m_size[b];
+    // a candidate must gain more than rounding: the choice is the same on a scaled domain
+    double best = before;
+    Point_2d best_y{ 0, 0 };
+    bool found = false;
+    // |BY| = 1.01 s: at s (template 1(a)'s 0.71 s diagonal) a lattice notch's quad has exactly
+    // 135 degrees at Y, in or out by rounding, and the runs of a scaled domain differed
+    for(double f : { 1.01, 1.1, 0.9, 1.2, 0.8 }) {
+      const Point_2d y{ m_xy[b].x + f * s * d.x, m_xy[b].y + f * s * d.y };
+      if(quad_badness({ m_xy[b], m_xy[a], y, m_xy[c1] }) > 45.0 + 1e-9) continue;
+      const double after = (std::max)({ buffer_angle_excess(right_side_angle(m_xy[a2], m_xy[a], y)),
+                                        buffer_angle_excess(right_side_angle(m_xy[a], y, m_xy[c1])),
+                                        buffer_angle_excess(right_side_angle(y, m_xy[c1], m_xy[c2])) });
+      if(after < best - 1e-6 && m_locator->segment_distance(m_xy[a], y, clear) > clear
+         && m_locator->segment_distance(y, m_xy[c1], clear) > clear) {
+        best = after;
+        best_y = y;
+        found = true;
+      }
+    }
+    if(!found) return;
+    // Y is a core point like the others (the first buffer points come after the core's)
+    const std::size_t y = add_point(best_y);
+    m_size.push_back(m_size[b]);
+    m_on_cycle.push_back(1);
+    m_on_cycle[b] = 0;
+    m_core_points = m_mesh.points.size();
+    add_quad({ b, a, y, c1 });
+    cyc[i] = y;
+    ++m_report.filled_notches;
+  }
+
   // Beside an input corner, v turns about it to share the corner's angle evenly between the
   // two quads it separates there (the paper's rotated bisectors, §5): one target per corner.
   void add_turns_about_corners(std::size_t v, const Vertex_quads& quads_at,
@@ -1141,9 +1231,11 @@ private:
     std::array<Point_2d, 4> P;
     for(int k = 0; k < 4; ++k) P[k] = m_xy[q[k]];
     double b = quad_badness(P);
-    // an angle an input corner alpha forces is not the strip's fault, and the quad's other
-    // angles may use [alpha, 180 - alpha]: their deviation from 90 is scaled so that this range
-    // costs what [45, 135] costs elsewhere
+    // an angle an input corner alpha forces is not the strip's fault: the quad is judged by its
+    // other three, which fit in [45, 135] (they sum to 360 - alpha; with [alpha, 180 - alpha]
+    // costing what [45, 135] costs elsewhere, as the paper allows, bird's 11.5-degree tip kept
+    // 138.8). Beyond 45 their deviation still counts less than elsewhere, as it did: on a
+    // needle's tip they cannot all fit.
     if(b < 1000.0)
       for(int k = 0; k < 4; ++k)
         if(input_corner_angle(q[k]) < 45.0 // cheap test first: the cost runs in inner loops
@@ -1151,8 +1243,10 @@ private:
           const double scale = 45.0 / (90.0 - input_corner_angle(q[k]));
           b = 0;
           for(int j = 0; j < 4; ++j)
-            if(j != k)
-              b = (std::max)(b, scale * std::abs(corner_angle_degrees(P[(j + 3) % 4], P[j], P[(j + 1) % 4]) - 90.0));
+            if(j != k) {
+              const double d = std::abs(corner_angle_degrees(P[(j + 3) % 4], P[j], P[(j + 1) % 4]) - 90.0);
+              b = (std::max)(b, d <= 45.0 ? d : 45.0 + scale * (d - 45.0));
+            }
           break;
         }
     return b;
