@@ -127,7 +127,7 @@ TEST(Quadtree_mesher_2, errors_name_the_points)
     Mesher(d, Criteria(0, 0, 16)).run();
     FAIL();
   } catch(const QM::Meshing_error& e) {
-    EXPECT_NE(std::string(e.what()).find("input points 1 (1, 1) and 2"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("input points 1 (0-based) (1, 1) and 2 (0-based)"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("maximum depth 16"), std::string::npos) << e.what();
   }
   EXPECT_THROW(Mesher(d, Criteria(1e-3, 0, 5)).run(), QM::Meshing_error); // max size too deep

@@ -154,9 +154,8 @@ public:
         names.push_back(m_input_index[i]);
         m_anchored_points.push_back(m_points[i]);
       }
-      m_anchors = internal::anchor_points(*m_tree, m_anchored_points, levels, [&](std::size_t i) {
-        return m_domain.point_label(names[i]) + (m_domain.point_labels.empty() ? " (0-based)" : "");
-      });
+      m_anchors = internal::anchor_points(*m_tree, m_anchored_points, levels,
+                                          [&](std::size_t i) { return input_point_name(names[i]); });
       m_point_names = std::move(names);
     } else {
       m_tree->balance();
@@ -298,7 +297,7 @@ public:
         if(best_bad != std::size_t(-1))
           return restore_round(std::move(best));
         std::ostringstream msg;
-        msg << "isolated point " << m_domain.point_label(m_point_names[m_lost_points.front()]) << " (" << requests.front().first.x
+        msg << "isolated point " << input_point_name(m_point_names[m_lost_points.front()]) << " (" << requests.front().first.x
             << ", " << requests.front().first.y << ") lies " << 2 * requests.front().second
             << " from the boundary: cells small enough to keep it a vertex inside the core are beyond the "
             << "quadtree's depth or its refinement rounds (" << m_rounds << ")";
@@ -448,6 +447,12 @@ private:
     m_timings.emplace_back(stage, d.count());
   }
 
+  // input point i as messages name it: its label, or its 0-based index marked so
+  std::string input_point_name(std::size_t i) const
+  {
+    return m_domain.point_label(i) + (m_domain.point_labels.empty() ? " (0-based)" : "");
+  }
+
   void check_finite() const
   {
     for(std::size_t i = 0; i < m_domain.points.size(); ++i) {
@@ -456,7 +461,7 @@ private:
       double y = CGAL::to_double(m_traits.compute_y_2_object()(p));
       if(!std::isfinite(x) || !std::isfinite(y) || std::abs(x) > 1e150 || std::abs(y) > 1e150) {
         std::ostringstream msg;
-        msg << "input point " << m_domain.point_label(i) << " (" << x << ", " << y
+        msg << "input point " << input_point_name(i) << " (" << x << ", " << y
             << ") is not finite or beyond 1e150 in magnitude";
         throw Meshing_error(msg.str());
       }
@@ -539,10 +544,9 @@ private:
       return min_size_level();
     std::ostringstream msg;
     msg.precision(17);
-    msg << "input points " << m_domain.point_label(m_input_index[i]) << " (" << m_xy[i][0] << ", " << m_xy[i][1]
-        << ") and " << m_domain.point_label(m_input_index[m_nearest[i]]) << " (" << m_xy[m_nearest[i]][0] << ", "
-        << m_xy[m_nearest[i]][1]
-        << ")" << (m_domain.point_labels.empty() ? " (0-based)" : "") << " are " << m_spacing[i] << " apart: separating them needs quadtree depth " << level
+    msg << "input points " << input_point_name(m_input_index[i]) << " (" << m_xy[i][0] << ", " << m_xy[i][1]
+        << ") and " << input_point_name(m_input_index[m_nearest[i]]) << " (" << m_xy[m_nearest[i]][0] << ", "
+        << m_xy[m_nearest[i]][1] << ") are " << m_spacing[i] << " apart: separating them needs quadtree depth " << level
         << ", beyond " << m_tree->depth_limit();
     if(m_criteria.min_size() > 0)
       msg << " or the minimum size " << m_criteria.min_size();
@@ -621,7 +625,6 @@ private:
         for(int dx = 0; dx < 2; ++dx) stack.emplace_back(k.child(dx, dy), side);
     }
   }
-
 
   // A domain's mesh lies within the bounding box of its points: cells wholly outside it are
   // cleared anyway, so the size bounds are not applied there (the power-of-two root square

@@ -898,6 +898,15 @@ private:
   {
     return (std::max)(0.0, beta - 225.0) + (std::max)(0.0, 112.5 - beta);
   }
+  // the largest buffer_angle_excess() of the three buffer-side angles at a, b and c, which
+  // are consecutive on a core cycle between a2 and c2 (what a template step at b changes)
+  double worst_buffer_angle_excess(const Point_2d& a2, const Point_2d& a, const Point_2d& b,
+                                   const Point_2d& c, const Point_2d& c2) const
+  {
+    return (std::max)({ buffer_angle_excess(right_side_angle(a2, a, b)),
+                        buffer_angle_excess(right_side_angle(a, b, c)),
+                        buffer_angle_excess(right_side_angle(b, c, c2)) });
+  }
 
   // A notch (buffer-side angle under 112.5 degrees) that apply_boundary_templates() left cannot move: a
   // core angle of 45 degrees at it (the centre of a cell's template, or a transition
@@ -930,9 +939,7 @@ private:
          || (h.t >= 1 && needs_fan_of_three(h.loop, (h.edge + 1) % nv)))
         return;
     }
-    const double before = (std::max)({ buffer_angle_excess(right_side_angle(m_xy[a2], m_xy[a], m_xy[b])),
-                                       buffer_angle_excess(beta),
-                                       buffer_angle_excess(right_side_angle(m_xy[b], m_xy[c1], m_xy[c2])) });
+    const double before = worst_buffer_angle_excess(m_xy[a2], m_xy[a], m_xy[b], m_xy[c1], m_xy[c2]);
     const Point_2d d = right_bisector(m_xy[a], m_xy[b], m_xy[c1]);
     const double s = 0.5 * (length_2d(minus_2d(m_xy[a], m_xy[b])) + length_2d(minus_2d(m_xy[c1], m_xy[b])));
     const double clear = 0.25 * m_size[b];
@@ -945,9 +952,7 @@ private:
     for(double f : { 1.01, 1.1, 0.9, 1.2, 0.8 }) {
       const Point_2d y{ m_xy[b].x + f * s * d.x, m_xy[b].y + f * s * d.y };
       if(quad_badness({ m_xy[b], m_xy[a], y, m_xy[c1] }) > 45.0 + 1e-9) continue;
-      const double after = (std::max)({ buffer_angle_excess(right_side_angle(m_xy[a2], m_xy[a], y)),
-                                        buffer_angle_excess(right_side_angle(m_xy[a], y, m_xy[c1])),
-                                        buffer_angle_excess(right_side_angle(y, m_xy[c1], m_xy[c2])) });
+      const double after = worst_buffer_angle_excess(m_xy[a2], m_xy[a], y, m_xy[c1], m_xy[c2]);
       if(after < best - 1e-6 && m_locator->segment_distance(m_xy[a], y, clear) > clear
          && m_locator->segment_distance(y, m_xy[c1], clear) > clear) {
         best = after;
@@ -1153,13 +1158,7 @@ private:
     if(!applies)
       return false;
     const Point_2d old = m_xy[b];
-    auto worst = [&](const Point_2d& p) {
-      double w = 0;
-      for(double x : { right_side_angle(m_xy[a2], m_xy[a], p), right_side_angle(m_xy[a], p, m_xy[c]),
-                       right_side_angle(p, m_xy[c], m_xy[c2]) })
-        w = (std::max)({ w, 112.5 - x, x - 225.0 });
-      return w;
-    };
+    auto worst = [&](const Point_2d& p) { return worst_buffer_angle_excess(m_xy[a2], m_xy[a], p, m_xy[c], m_xy[c2]); };
     double best = worst(old);
     if(best <= angle_tolerance)
       return false;
@@ -1518,38 +1517,40 @@ private:
         }
       }
     }
+    // A kept loop vertex wider than 135 degrees that no F point projects onto would be the
+    // middle of a fan of boundary edges, a quad with the vertex's own angle: a coarse polygon's
+    // vertices, kept for the chord tolerance and turning by less than the feature angle, are
+    // about as many as the F points (a 24-gon of radius 1 had 8 quads at 165 degrees). Such a
+    // vertex takes over the node of the nearer projection beside it in the chain; the first
+    // node stays the first F point's, and those spread around a corner stay its fan's.
+    auto take_over_projection_nodes = [&](std::vector<Node>& candidates, std::vector<std::size_t>& alias) {
+      std::vector<std::size_t> kept;
+      for(std::size_t k = 0; k < candidates.size(); ++k)
+        if(candidates[k].keep) kept.push_back(k);
+      const std::size_t nk = kept.size();
+      for(std::size_t j = 0; j < nk; ++j) {
+        Node& v = candidates[kept[j]];
+        if(v.vertex == none || v.owner != none || domain_angle(l, v.vertex) <= 135.0) continue;
+        std::size_t take = none;
+        double nearest = HUGE_VAL;
+        for(std::size_t side : { (j + nk - 1) % nk, (j + 1) % nk }) {
+          const Node& p = candidates[kept[side]];
+          if(!p.keep || p.vertex != none || p.owner == none || p.owner == 0 || spread[p.owner]) continue;
+          const double d = std::abs(cyclic(p.param - v.param));
+          if(d < nearest) { nearest = d; take = kept[side]; }
+        }
+        if(take == none) continue;
+        v.owner = candidates[take].owner;
+        alias[v.owner] = v.vertex;
+        candidates[take].keep = false;
+      }
+    };
     // The pairing of the strip, from the candidate nodes (copies: a second plan starts afresh).
     struct Strip_plan { bool ok = false; Strip_result best; std::vector<std::size_t> gid; };
     auto plan_strip = [&](std::vector<Node> nodes, std::vector<std::size_t> alias_vertex, bool take_over) {
       Strip_plan plan;
-      // A kept loop vertex wider than 135 degrees that no F point projects onto would be the
-      // middle of a fan of boundary edges, a quad with the vertex's own angle: a coarse polygon's
-      // vertices, kept for the chord tolerance and turning by less than the feature angle, are
-      // about as many as the F points (a 24-gon of radius 1 had 8 quads at 165 degrees). Such a
-      // vertex takes over the node of the nearer projection beside it in the chain; the first
-      // node stays the first F point's, and those spread around a corner stay its fan's.
-      if(take_over) {
-        std::vector<std::size_t> kept;
-        for(std::size_t k = 0; k < nodes.size(); ++k)
-          if(nodes[k].keep) kept.push_back(k);
-        const std::size_t nk = kept.size();
-        for(std::size_t j = 0; j < nk; ++j) {
-          Node& v = nodes[kept[j]];
-          if(v.vertex == none || v.owner != none || domain_angle(l, v.vertex) <= 135.0) continue;
-          std::size_t take = none;
-          double nearest = HUGE_VAL;
-          for(std::size_t side : { (j + nk - 1) % nk, (j + 1) % nk }) {
-            const Node& p = nodes[kept[side]];
-            if(!p.keep || p.vertex != none || p.owner == none || p.owner == 0 || spread[p.owner]) continue;
-            const double d = std::abs(cyclic(p.param - v.param));
-            if(d < nearest) { nearest = d; take = kept[side]; }
-          }
-          if(take == none) continue;
-          v.owner = nodes[take].owner;
-          alias_vertex[v.owner] = v.vertex;
-          nodes[take].keep = false;
-        }
-      }
+      if(take_over)
+        take_over_projection_nodes(nodes, alias_vertex);
       std::vector<Node> chain;
       std::vector<std::size_t> chain_of_node(nodes.size(), none);
       for(std::size_t k = 0; k < nodes.size(); ++k)
