@@ -322,9 +322,10 @@ public:
         best_bad = m_buffer_report.bad_angle_quads;
       const std::size_t added = queue_refinement(requests);
       // an angle round that came out invalid is refined for validity, within the round budget;
-      // a valid one that did not lower the count ends the angle rounds
+      // a valid one that did not lower the count does not end the angle rounds: the next
+      // pairing of the finer strip may (a 25-gon kept a fan at 165.6 degrees for two rounds)
       const bool more = added > 0 && m_rounds < max_refinement_rounds
-                        && (best_bad == std::size_t(-1) || !valid || (improved && angle_rounds < max_angle_rounds));
+                        && (best_bad == std::size_t(-1) || !valid || angle_rounds < max_angle_rounds);
       if(more) {
         if(improved)
           best = save_round(std::move(mesh));

@@ -1251,6 +1251,38 @@ private:
     return b;
   }
 
+  // A quad's cost in the strip's pairing: an angle out of [45, 135] at an input vertex between
+  // two boundary nodes (the middle of a fan of boundary edges) is the input's own angle there,
+  // which no later move can change, unlike a quad sheared by its F points, which the optimizer
+  // straightens: it costs as much as a hundred degrees more (lake_superior_jigsaw kept a
+  // 135.9-degree corner whole, one quad spanning it, rather than shear a row).
+  double strip_cost(const Quad& q) const
+  {
+    const double b = cost(q);
+    if(b <= 45.0 + angle_tolerance || b >= 1000.0) return b;
+    return fixed_angle_out_of_range(q) >= 0 ? b + 100.0 : b;
+  }
+
+  // the corner (0 to 3) of q at an input vertex between two boundary nodes whose angle is out
+  // of [45, 135] and not forced, or -1
+  int fixed_angle_out_of_range(const Quad& q) const
+  {
+    for(int k = 0; k < 4; ++k) {
+      const std::size_t v = q[k], u = q[(k + 3) % 4], w = q[(k + 1) % 4];
+      if(!on_boundary_chain(v) || !on_boundary_chain(u) || !on_boundary_chain(w)) continue;
+      const double angle = corner_angle_degrees(m_xy[u], m_xy[v], m_xy[w]);
+      if(std::abs(angle - 90.0) > 45.0 + angle_tolerance && !forced_angle(v, angle)) return k;
+    }
+    return -1;
+  }
+
+  // an input vertex, a point on an input edge, or a gap's candidate extra node (an id past the
+  // mesh's points while the strip is paired)
+  bool on_boundary_chain(std::size_t v) const
+  {
+    return is_input_vertex(v) || m_slide.count(v) != 0 || v >= m_mesh.points.size();
+  }
+
   // The strip's cost: the sum over its quads of the squared deviation from 90 degrees, plus a
   // heavy penalty beyond 45 (outside [45, 135]) and a prohibitive one for invalid quads. A sum,
   // not the worst quad: one poor quad at a corner beats a whole row of sheared ones.
@@ -1517,27 +1549,43 @@ private:
         }
       }
     }
-    // A kept loop vertex wider than 135 degrees that no F point projects onto would be the
+    // A kept loop vertex wider than 135 degrees that no F point projects onto may become the
     // middle of a fan of boundary edges, a quad with the vertex's own angle: a coarse polygon's
     // vertices, kept for the chord tolerance and turning by less than the feature angle, are
     // about as many as the F points (a 24-gon of radius 1 had 8 quads at 165 degrees). Such a
-    // vertex takes over the node of the nearer projection beside it in the chain; the first
-    // node stays the first F point's, and those spread around a corner stay its fan's.
-    auto take_over_projection_nodes = [&](std::vector<Node>& candidates, std::vector<std::size_t>& alias) {
+    // vertex (of those marked in `at`) takes over the node of the nearer projection beside it
+    // in the chain; the first node stays the first F point's, and those spread around a corner
+    // stay its fan's. The chord that then spans the projection's place must keep the nodes
+    // under it within the tolerance.
+    auto take_over_projection_nodes = [&](std::vector<Node>& candidates, std::vector<std::size_t>& alias,
+                                          const std::vector<bool>& at) {
+      const std::size_t N = candidates.size();
       std::vector<std::size_t> kept;
-      for(std::size_t k = 0; k < candidates.size(); ++k)
+      for(std::size_t k = 0; k < N; ++k)
         if(candidates[k].keep) kept.push_back(k);
       const std::size_t nk = kept.size();
+      // the nearest node kept before (step N - 1) or after (step 1) candidate k
+      auto kept_beside = [&](std::size_t k, std::size_t step) {
+        do k = (k + step) % N; while(!candidates[k].keep);
+        return k;
+      };
+      auto chord_within_tolerance_without = [&](std::size_t k) {
+        const std::size_t a = kept_beside(k, N - 1), b = kept_beside(k, 1);
+        for(std::size_t i = (a + 1) % N; i != b; i = (i + 1) % N)
+          if(point_segment_distance(candidates[i].xy, candidates[a].xy, candidates[b].xy) > m_chord_tolerance)
+            return false;
+        return true;
+      };
       for(std::size_t j = 0; j < nk; ++j) {
         Node& v = candidates[kept[j]];
-        if(v.vertex == none || v.owner != none || domain_angle(l, v.vertex) <= 135.0) continue;
+        if(v.vertex == none || !at[v.vertex] || v.owner != none || domain_angle(l, v.vertex) <= 135.0) continue;
         std::size_t take = none;
         double nearest = HUGE_VAL;
         for(std::size_t side : { (j + nk - 1) % nk, (j + 1) % nk }) {
           const Node& p = candidates[kept[side]];
           if(!p.keep || p.vertex != none || p.owner == none || p.owner == 0 || spread[p.owner]) continue;
           const double d = std::abs(cyclic(p.param - v.param));
-          if(d < nearest) { nearest = d; take = kept[side]; }
+          if(d < nearest && chord_within_tolerance_without(kept[side])) { nearest = d; take = kept[side]; }
         }
         if(take == none) continue;
         v.owner = candidates[take].owner;
@@ -1547,10 +1595,10 @@ private:
     };
     // The pairing of the strip, from the candidate nodes (copies: a second plan starts afresh).
     struct Strip_plan { bool ok = false; Strip_result best; std::vector<std::size_t> gid; };
-    auto plan_strip = [&](std::vector<Node> nodes, std::vector<std::size_t> alias_vertex, bool take_over) {
+    auto plan_strip = [&](std::vector<Node> nodes, std::vector<std::size_t> alias_vertex,
+                          const std::vector<bool>& take_over_at) {
       Strip_plan plan;
-      if(take_over)
-        take_over_projection_nodes(nodes, alias_vertex);
+      take_over_projection_nodes(nodes, alias_vertex, take_over_at);
       std::vector<Node> chain;
       std::vector<std::size_t> chain_of_node(nodes.size(), none);
       for(std::size_t k = 0; k < nodes.size(); ++k)
@@ -1619,12 +1667,17 @@ private:
           }
           sites[r] = site;
           extra[r] = Extra_node{ e, m_xy.size() };
+          if(site.vertex != none) { // the pairing costs its angle as the input vertex it is
+            m_corner_angle.resize(m_xy.size() + 1, std::numeric_limits<double>::quiet_NaN());
+            m_corner_angle[m_xy.size()] = domain_angle(l, site.vertex);
+          }
           m_xy.push_back(xy);
         }
         Strip_result res = pair_strip(fid, gid, g, extra);
         // the candidates had ids of their own past the mesh's points (the cost cache knows quads
         // by their ids); the chosen ones become mesh points
         m_xy.resize(first_candidate);
+        m_corner_angle.resize((std::min)(m_corner_angle.size(), first_candidate));
         for(auto it = m_cost_cache.begin(); it != m_cost_cache.end();) {
           bool candidate = false;
           for(std::size_t v : it->first) candidate = candidate || v >= first_candidate;
@@ -1711,12 +1764,43 @@ private:
       plan.gid = std::move(gid);
       return plan;
     };
-    // The vertices take over only where the pairing without it leaves a quad out of range:
-    // elsewhere the pairing may do better by switching phase at the vertex.
-    Strip_plan plan = plan_strip(nodes, alias_vertex, false);
+    // The vertices take over only where the pairing leaves a quad out of range, and the strip
+    // is paired again only if that lowers its cost: elsewhere the pairing may do better by
+    // switching phase at a vertex. First at the vertices a pairing leaves the middle of a fan
+    // out of range (the new pairing may leave one at another vertex: a few rounds); if fans
+    // remain, at every vertex at once (a coarse polygon's fans move round by round).
+    std::vector<bool> take_over_at(nv, false);
+    Strip_plan plan = plan_strip(nodes, alias_vertex, take_over_at);
     if(plan.ok && plan.best.cost.worst > 45.0 + angle_tolerance) {
-      Strip_plan other = plan_strip(nodes, alias_vertex, true);
-      if(other.ok && other.best.cost < plan.best.cost) plan = std::move(other);
+      // the loop vertices at such fans in a pairing (a pairing may add input vertices to the mesh)
+      auto fan_vertices = [&](const Strip_plan& p) {
+        std::unordered_map<std::size_t, std::size_t> loop_vertex_of_point;
+        for(std::size_t k = 0; k < nv; ++k) {
+          auto it = m_input_vertex.find(m_loops.loops[l].vertices[k]);
+          if(it != m_input_vertex.end()) loop_vertex_of_point[it->second] = k;
+        }
+        std::vector<std::size_t> fans;
+        for(const Quad& q : p.best.quads) {
+          const int k = fixed_angle_out_of_range(q);
+          auto it = k < 0 ? loop_vertex_of_point.end() : loop_vertex_of_point.find(q[std::size_t(k)]);
+          if(it != loop_vertex_of_point.end()) fans.push_back(it->second);
+        }
+        return fans;
+      };
+      Strip_plan latest = plan;
+      for(int round = 0; round < 4; ++round) {
+        bool more = false;
+        for(std::size_t k : fan_vertices(latest))
+          if(!take_over_at[k]) more = take_over_at[k] = true;
+        if(!more) break;
+        latest = plan_strip(nodes, alias_vertex, take_over_at);
+        if(!latest.ok) break;
+        if(latest.best.cost < plan.best.cost) plan = latest;
+      }
+      if(!fan_vertices(plan).empty()) {
+        Strip_plan everywhere = plan_strip(nodes, alias_vertex, std::vector<bool>(nv, true));
+        if(everywhere.ok && everywhere.best.cost < plan.best.cost) plan = std::move(everywhere);
+      }
     }
     m_cache_costs = false;
     m_cost_cache.clear();
@@ -1897,14 +1981,14 @@ private:
             const auto& t = o.t;
             if(!o.paired[p]) {
               std::size_t pos = std::size_t(p);
-              for(; pos + 1 < t.size(); pos += 2) o.pair_costs[p].push_back(cost(merge(t[pos], t[pos + 1])));
+              for(; pos + 1 < t.size(); pos += 2) o.pair_costs[p].push_back(strip_cost(merge(t[pos], t[pos + 1])));
               const std::size_t k = k_of[r] + (o.ins ? 1 : 0);
               o.out[p] = pos == t.size() ? 0 : o.mid == k ? 1 : (o.ins && last_edge_extra(r)) ? 3 : 2;
               o.paired[p] = true;
             }
             Cost cst = best[r][s];
             if(s != 0) {
-              if(o.with_pending[s] < 0) o.with_pending[s] = cost(merge(pending(r == 0 ? n - 1 : r - 1, s), t[0]));
+              if(o.with_pending[s] < 0) o.with_pending[s] = strip_cost(merge(pending(r == 0 ? n - 1 : r - 1, s), t[0]));
               cst.add(o.with_pending[s]);
             }
             for(double c : o.pair_costs[p]) cst.add(c);
