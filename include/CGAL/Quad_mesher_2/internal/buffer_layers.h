@@ -1251,11 +1251,13 @@ private:
     return b;
   }
 
-  // A quad's cost in the strip's pairing: an angle out of [45, 135] at an input vertex between
-  // two boundary nodes (the middle of a fan of boundary edges) is the input's own angle there,
-  // which no later move can change, unlike a quad sheared by its F points, which the optimizer
-  // straightens: it costs as much as a hundred degrees more (lake_superior_jigsaw kept a
-  // 135.9-degree corner whole, one quad spanning it, rather than shear a row).
+  // A quad's cost in the strip's pairing: an angle out of [45, 135] at a boundary node between
+  // two others (the middle of a fan of boundary edges) is the boundary's own angle there,
+  // which no later move changes (an input vertex stays; a point on an input edge only slides
+  // along it), unlike a quad sheared by its F points, which the optimizer straightens: it
+  // costs as much as a hundred degrees more (lake_superior_jigsaw kept a 135.9-degree corner
+  // whole, one quad spanning it, rather than shear a row; the mirrored guitar kept a chord
+  // node at 174.5 degrees beside a left-out vertex).
   double strip_cost(const Quad& q) const
   {
     const double b = cost(q);
@@ -1263,8 +1265,8 @@ private:
     return fixed_angle_out_of_range(q) >= 0 ? b + 100.0 : b;
   }
 
-  // the corner (0 to 3) of q at an input vertex between two boundary nodes whose angle is out
-  // of [45, 135] and not forced, or -1
+  // the corner (0 to 3) of q at a boundary node between two others whose angle is out of
+  // [45, 135] and not forced, or -1
   int fixed_angle_out_of_range(const Quad& q) const
   {
     for(int k = 0; k < 4; ++k) {
