@@ -13,6 +13,7 @@
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -74,7 +75,11 @@ public:
   double origin_x() const { return m_ox; }
   double origin_y() const { return m_oy; }
   /// side of a cell at `level`
-  double cell_side(int level) const { return std::ldexp(m_root_side, -level); }
+  double cell_side(int level) const
+  {
+    // from a table: every lattice point and cell asks, and ldexp is a library call
+    return unsigned(level) < m_sides.size() ? m_sides[level] : std::ldexp(m_root_side, -level);
+  }
   /// the lattice level of the vertices of a templated mesh: one below `max_depth()`
   int vertex_level() const { return m_max_depth + 1; }
   /// the lattice coordinate `x` at `level`, as the exact double it is
@@ -375,6 +380,8 @@ private:
     int e = 0;
     std::frexp(side_goal, &e); // side_goal in [2^(e-1), 2^e)
     m_root_side = std::ldexp(1.0, e);
+    for(std::size_t level = 0; level < m_sides.size(); ++level)
+      m_sides[level] = std::ldexp(m_root_side, -int(level));
     // The deepest level whose lattice (and the half-cell lattice of its templates) is exact in
     // double this far from the origin, and whose cells are not so small that squared lengths
     // underflow. Deeper cells are refused with the reason, not rounded.
@@ -488,6 +495,7 @@ private:
   GeomTraits m_traits;
   int m_max_depth;
   double m_root_side = 1;
+  std::array<double, 64> m_sides; // cell_side() of levels 0 to 63
   double m_ox = 0, m_oy = 0;
   std::uint32_t m_nx = 1, m_ny = 1;
   internal::Key_map m_nodes;
