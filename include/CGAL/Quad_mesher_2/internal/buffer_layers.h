@@ -205,7 +205,7 @@ public:
       }
     }
     m_diag = std::hypot(xmax - xmin, ymax - ymin);
-    m_tree = std::make_unique<Loops_box_tree>(boxes);
+    m_tree = std::make_unique<Box_tree>(boxes);
   }
 
   const std::vector<Point_2d>& loop(std::size_t l) const { return m_loops[l]; }
@@ -290,7 +290,7 @@ private:
   std::vector<std::array<std::size_t, 2>> m_edge_of;
   std::vector<std::vector<double>> m_arc;
   std::vector<Bbox_2> m_boxes;
-  std::unique_ptr<Loops_box_tree> m_tree;
+  std::unique_ptr<Box_tree> m_tree;
   double m_diag = 0;
 };
 

@@ -53,7 +53,7 @@
 //
 // Cost: O(Q + V + (Q + V) / 64 * log S + K) for Q quads, V vertices, S segments and K
 // candidate pairs, in a few linear passes, no sort. Quad/segment and vertex/segment
-// candidates come from a bounding-box hierarchy over the segments (`Loops_box_tree`), one
+// candidates come from a bounding-box hierarchy over the segments (`Box_tree`), one
 // query per block of 64 consecutive quads or vertices: `templated_mesh` numbers both in
 // Morton order, so a block is compact and most blocks, far from the boundary, get no
 // candidate and no exact predicate. Inside/outside is passed from quad to quad through
@@ -123,7 +123,7 @@ public:
         m_boxes.push_back(bbox(a) + bbox(b));
       }
     }
-    m_tree.reset(new Loops_box_tree(m_boxes));
+    m_tree.reset(new Box_tree(m_boxes));
   }
   Domain_segments(const Domain_segments&) = delete;
   Domain_segments& operator=(const Domain_segments&) = delete;
@@ -175,7 +175,7 @@ private:
   std::vector<Segment_2> m_segments;
   std::vector<std::size_t> m_loop;
   std::vector<Bbox_2> m_boxes;
-  std::unique_ptr<Loops_box_tree> m_tree; // keeps a reference to m_boxes
+  std::unique_ptr<Box_tree> m_tree; // keeps a reference to m_boxes
 };
 
 template <class K>
