@@ -261,6 +261,10 @@ public:
     m_unbalanced.clear();
     m_unbalanced.shrink_to_fit();
     m_new_leaves = &by_level;
+    // Cells known to be nodes, in a small direct-mapped cache before the node map: leaves
+    // close in Morton order mostly share their neighbours (siblings their parent), and a node
+    // stays one, so a hit skips a lookup, a cache miss in a map far larger than the cache.
+    std::vector<Key_code> known_nodes(std::size_t(1) << known_bits, ~Key_code(0));
     for(int level = m_depth; level >= 2; --level) {
       // by_level[level] does not grow while this level is processed; Morton order keeps the
       // lookups of neighbouring leaves close together in time (and so in cache).
@@ -280,8 +284,14 @@ public:
         const std::int64_t j0 = k.j & 1 ? k.j : std::int64_t(k.j) - 1;
         for(std::int64_t nj = j0; nj <= j0 + 1; ++nj)
           for(std::int64_t ni = i0; ni <= i0 + 1; ++ni)
-            if(in_grid(level, ni, nj))
-              ensure_node(Cell_key(level - 1, std::uint64_t(ni >> 1), std::uint64_t(nj >> 1)));
+            if(in_grid(level, ni, nj)) {
+              const Key_code code = Cell_key(level - 1, std::uint64_t(ni >> 1), std::uint64_t(nj >> 1)).code();
+              Key_code& known = known_nodes[(std::uint64_t(code) * 0x9e3779b97f4a7c15ULL) >> (64 - known_bits)];
+              if(known != code) {
+                ensure_node(Cell_key::from_code(code));
+                known = code;
+              }
+            }
       }
     }
     m_new_leaves = nullptr;
@@ -338,6 +348,7 @@ private:
   static constexpr std::uint32_t SPLIT = 0;
 
   static constexpr int morton_level = 27;
+  static constexpr int known_bits = 12; // balance()'s cache of known nodes: 4096 cells
   static constexpr int snap_depth = 24;
 
   // spreads the low 32 bits of x to the even bits of the result
