@@ -6,6 +6,7 @@
 #define CGAL_QUAD_MESHER_2_INTERNAL_BOX_TREE_H
 
 #include <CGAL/Bbox_2.h>
+#include <CGAL/assertions.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -37,18 +38,22 @@ public:
   void query(const Bbox_2& q, F&& f) const
   {
     if(m_nodes.empty()) return;
-    std::vector<std::size_t> stack;
-    stack.push_back(0);
-    while(!stack.empty()) {
-      const Node& n = m_nodes[stack.back()];
-      stack.pop_back();
+    // on the call stack, not the heap: the buffer layers query millions of times. A pop
+    // pushes two, so it never holds more than the tree's depth plus one, at most 34 (fewer
+    // than 2^32 boxes, median splits down to leaf_size).
+    std::size_t stack[64];
+    std::size_t size = 0;
+    stack[size++] = 0;
+    while(size > 0) {
+      const Node& n = m_nodes[stack[--size]];
       if(!CGAL::do_overlap(n.box, q)) continue;
       if(n.left == no_child) {
         for(std::size_t k = n.begin; k < n.end; ++k)
           if(CGAL::do_overlap(m_boxes[m_items[k]], q)) f(static_cast<std::size_t>(m_items[k]));
       } else {
-        stack.push_back(n.left);
-        stack.push_back(n.right);
+        CGAL_assertion(size + 2 <= 64);
+        stack[size++] = n.left;
+        stack[size++] = n.right;
       }
     }
   }
