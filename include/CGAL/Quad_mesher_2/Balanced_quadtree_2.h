@@ -8,6 +8,7 @@
 #include <CGAL/Quad_mesher_2/Cell_key.h>
 #include <CGAL/Quad_mesher_2/Meshing_error.h>
 #include <CGAL/Quad_mesher_2/internal/Key_map.h>
+#include <CGAL/Quad_mesher_2/internal/radix_sort.h>
 
 #include <CGAL/assertions.h>
 #include <CGAL/number_utils.h>
@@ -272,8 +273,7 @@ public:
       ordered.reserve(by_level[level].size());
       for(const Cell_key& k : by_level[level])
         ordered.emplace_back(morton_code(k), k);
-      std::sort(ordered.begin(), ordered.end(),
-                [](const auto& a, const auto& b) { return a.first < b.first; });
+      sort_by_morton_code(ordered);
       for(const auto& entry : ordered) {
         const Cell_key& k = entry.second;
         if(!is_leaf(k))
@@ -309,6 +309,19 @@ public:
     const std::uint64_t j = level >= k.level ? std::uint64_t(k.j) << (level - k.level)
                                              : std::uint64_t(k.j) >> (k.level - level);
     return spread_bits(i) | (spread_bits(j) << 1);
+  }
+
+  /// Sorts `coded`, cells each with its `morton_code()`, by the code.
+  void sort_by_morton_code(std::vector<std::pair<std::uint64_t, Cell_key>>& coded) const
+  {
+    // Down to level 27 every cell has its own code and there is one order, which a radix sort
+    // finds fastest. Deeper cells tie: they keep the order std::sort gives them, as they did.
+    int deepest = 0;
+    for(const auto& c : coded) deepest = (std::max)(deepest, int(c.second.level));
+    if(deepest <= morton_level)
+      internal::radix_sort_by_key(coded);
+    else
+      std::sort(coded.begin(), coded.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   }
 
   /// `true` if leaves sharing an edge or a corner never differ by more than one level.

@@ -93,8 +93,7 @@ std::vector<Cell_key> leaves_in_morton_order(const Tree& tree)
   std::vector<std::pair<std::uint64_t, Cell_key>> coded;
   coded.reserve(tree.number_of_leaves());
   tree.for_each_leaf([&](const Cell_key& k) { coded.emplace_back(tree.morton_code(k), k); });
-  std::sort(coded.begin(), coded.end(),
-            [](const auto& a, const auto& b) { return a.first < b.first; });
+  tree.sort_by_morton_code(coded);
   std::vector<Cell_key> result;
   result.reserve(coded.size());
   for(const auto& c : coded)
