@@ -274,8 +274,12 @@ public:
       for(const Cell_key& k : by_level[level])
         ordered.emplace_back(morton_code(k), k);
       sort_by_morton_code(ordered);
-      for(const auto& entry : ordered) {
-        const Cell_key& k = entry.second;
+      for(std::size_t n = 0; n < ordered.size(); ++n) {
+        // the node map's slot of a leaf a few places on is loaded meanwhile: its lookup here
+        // was most of balance()'s time, one cache miss each
+        if(n + prefetch_ahead < ordered.size())
+          m_nodes.prefetch(ordered[n + prefetch_ahead].second.code());
+        const Cell_key& k = ordered[n].second;
         if(!is_leaf(k))
           continue;
         // The 3x3 block of level-L cells around k lies in a 2x2 block of level L-1 cells,
@@ -362,6 +366,7 @@ private:
 
   static constexpr int morton_level = 27;
   static constexpr int known_bits = 12; // balance()'s cache of known nodes: 4096 cells
+  static constexpr std::size_t prefetch_ahead = 8; // balance()'s look-ahead in its leaves
   static constexpr int snap_depth = 24;
 
   // spreads the low 32 bits of x to the even bits of the result
