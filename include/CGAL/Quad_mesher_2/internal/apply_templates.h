@@ -115,7 +115,9 @@ templated_mesh(const Tree& tree, std::vector<Cell_key>* quad_cells = nullptr,
   Quad_mesh_2<Point_2> mesh;
   const int vertex_level = tree.vertex_level();
   const std::size_t expected = tree.number_of_leaves() * 2;
-  Key_map vertex_index(expected);
+  // about one vertex per leaf (most leaves stay one quad): a map sized for that keeps its
+  // load under a half and is half the memory to clear and miss in; more vertices rehash it
+  Key_map vertex_index(tree.number_of_leaves());
   std::uint32_t number_of_vertices = 0;
   mesh.quads.reserve(expected);
   if(quad_cells != nullptr) {
