@@ -596,6 +596,13 @@ public:
         add({ f, g, G[q], F[q] });
       return r;
     };
+    // the eight directions the tries step in, and the tries, made once
+    std::array<Point_2d, 8> direction;
+    for(int k = 0; k < 8; ++k) {
+      const double a = k * 3.14159265358979323846 / 4;
+      direction[k] = Point_2d{ std::cos(a), std::sin(a) };
+    }
+    std::vector<Point_2d> tries;
     for(int pass = 0; pass < 8; ++pass) {
       bool moved = false;
       for(std::size_t i = 0; i < n; ++i) {
@@ -606,14 +613,12 @@ public:
         Point_2d best_f = F[i], best_g = G[i];
         const Point_2d mid{ 0.5 * (F[(i + n - 1) % n].x + F[(i + 1) % n].x),
                             0.5 * (F[(i + n - 1) % n].y + F[(i + 1) % n].y) };
-        std::vector<Point_2d> tries;
+        tries.clear();
         for(double s : { 1.0, 0.5, 0.25 })
           tries.push_back(Point_2d{ F[i].x + s * (mid.x - F[i].x), F[i].y + s * (mid.y - F[i].y) });
         for(double s : { 0.2, 0.1, 0.05 })
-          for(int k = 0; k < 8; ++k) {
-            const double a = k * 3.14159265358979323846 / 4;
-            tries.push_back(Point_2d{ F[i].x + s * h * std::cos(a), F[i].y + s * h * std::sin(a) });
-          }
+          for(const Point_2d& d : direction)
+            tries.push_back(Point_2d{ F[i].x + s * h * d.x, F[i].y + s * h * d.y });
         for(const Point_2d& f : tries) {
           if(length_2d(minus_2d(f, start[i])) > reach[i]) continue;
           Point_2d g{ 0, 0 };
