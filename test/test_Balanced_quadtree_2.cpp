@@ -11,12 +11,17 @@
 #include <CGAL/Quad_mesher_2/Mesh_criteria_2.h>
 #include <CGAL/Quad_mesher_2/internal/Key_map.h>
 #include <CGAL/Quad_mesher_2/internal/apply_templates.h>
+#include <CGAL/Quad_mesher_2/internal/radix_sort.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cstdint>
 #include <random>
 #include <set>
+#include <utility>
+#include <vector>
 
 namespace qm2_test_quadtree {
 
@@ -166,6 +171,48 @@ TEST(Balanced_quadtree_2, balance_random_trees)
     EXPECT_GE(range.min, 45 - 1e-9);
     EXPECT_LE(range.max, 135 + 1e-9);
   }
+}
+
+// templated_mesh() skips the lookups of four sibling leaves at their parent's centre: each
+// leaf must still get the template choose_template() gives it alone (as many quads).
+TEST(Balanced_quadtree_2, templated_mesh_takes_each_leafs_own_template)
+{
+  std::mt19937 rng(11);
+  for(int trial = 0; trial < 20; ++trial) {
+    Tree t = unit_tree(8);
+    std::uniform_real_distribution<double> u(0, 2);
+    std::uniform_int_distribution<int> lv(1, 8);
+    for(int p = 0; p < 1 + trial % 5; ++p)
+      t.refine_at(K::Point_2(u(rng), u(rng)), lv(rng));
+    t.balance();
+    std::vector<Cell_key> cells;
+    const auto mesh = CGAL::Quad_mesher_2::internal::templated_mesh(t, &cells);
+    ASSERT_EQ(cells.size(), mesh.quads.size());
+    for(std::size_t q = 0; q < cells.size();) {
+      const Cell_key k = cells[q];
+      std::size_t n = 0;
+      while(q < cells.size() && cells[q] == k) ++q, ++n;
+      const auto& expected = CGAL::Quad_mesher_2::internal::template_of(CGAL::Quad_mesher_2::internal::choose_template(t, k));
+      ASSERT_EQ(n, expected.size) << "leaf (" << k.level << ", " << k.i << ", " << k.j << ")";
+    }
+  }
+}
+
+// The radix sort behind the Morton order is a stable sort by key, whatever bits the keys use.
+TEST(Balanced_quadtree_2, radix_sort_is_a_stable_sort_by_key)
+{
+  std::mt19937_64 rng(5);
+  for(int low_zero_bits : { 0, 3, 20, 40 })
+    for(std::size_t n : { 0, 1, 2, 7, 1000, 20000 }) {
+      std::vector<std::pair<std::uint64_t, std::size_t>> v(n);
+      for(std::size_t i = 0; i < n; ++i)
+        v[i] = { ((rng() % (n / 3 + 1)) << low_zero_bits) | (low_zero_bits == 0 ? rng() % 2 : 0), i };
+      if(n == 20000) v[7].first = ~std::uint64_t(0) << low_zero_bits; // the top bits too
+      auto expected = v;
+      std::stable_sort(expected.begin(), expected.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+      CGAL::Quad_mesher_2::internal::radix_sort_by_key(v);
+      ASSERT_EQ(v, expected) << low_zero_bits << " " << n;
+    }
 }
 
 TEST(Balanced_quadtree_2, balance_splits_corner_neighbours)

@@ -8,11 +8,13 @@
 #include <CGAL/Quad_mesher_2/Cell_key.h>
 #include <CGAL/Quad_mesher_2/Meshing_error.h>
 #include <CGAL/Quad_mesher_2/internal/Key_map.h>
+#include <CGAL/Quad_mesher_2/internal/radix_sort.h>
 
 #include <CGAL/assertions.h>
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -74,7 +76,11 @@ public:
   double origin_x() const { return m_ox; }
   double origin_y() const { return m_oy; }
   /// side of a cell at `level`
-  double cell_side(int level) const { return std::ldexp(m_root_side, -level); }
+  double cell_side(int level) const
+  {
+    // from a table: every lattice point and cell asks, and ldexp is a library call
+    return unsigned(level) < m_sides.size() ? m_sides[level] : std::ldexp(m_root_side, -level);
+  }
   /// the lattice level of the vertices of a templated mesh: one below `max_depth()`
   int vertex_level() const { return m_max_depth + 1; }
   /// the lattice coordinate `x` at `level`, as the exact double it is
@@ -177,6 +183,9 @@ public:
   /// Splits leaf `k` into its four children.
   void split(const Cell_key& k)
   {
+    // the children's slots, far apart in a map far larger than the cache, load together
+    for(int c = 0; c < 4; ++c)
+      m_nodes.prefetch(k.child(c & 1, c >> 1).code());
     std::uint32_t* v = m_nodes.find(k.code());
     CGAL_precondition(v != nullptr && *v == LEAF);
     if(k.level >= m_max_depth)
@@ -256,6 +265,10 @@ public:
     m_unbalanced.clear();
     m_unbalanced.shrink_to_fit();
     m_new_leaves = &by_level;
+    // Cells known to be nodes, in a small direct-mapped cache before the node map: leaves
+    // close in Morton order mostly share their neighbours (siblings their parent), and a node
+    // stays one, so a hit skips a lookup, a cache miss in a map far larger than the cache.
+    std::vector<Key_code> known_nodes(std::size_t(1) << known_bits, ~Key_code(0));
     for(int level = m_depth; level >= 2; --level) {
       // by_level[level] does not grow while this level is processed; Morton order keeps the
       // lookups of neighbouring leaves close together in time (and so in cache).
@@ -263,10 +276,13 @@ public:
       ordered.reserve(by_level[level].size());
       for(const Cell_key& k : by_level[level])
         ordered.emplace_back(morton_code(k), k);
-      std::sort(ordered.begin(), ordered.end(),
-                [](const auto& a, const auto& b) { return a.first < b.first; });
-      for(const auto& entry : ordered) {
-        const Cell_key& k = entry.second;
+      sort_by_morton_code(ordered);
+      for(std::size_t n = 0; n < ordered.size(); ++n) {
+        // the node map's slot of a leaf a few places on is loaded meanwhile: its lookup here
+        // was most of balance()'s time, one cache miss each
+        if(n + prefetch_ahead < ordered.size())
+          m_nodes.prefetch(ordered[n + prefetch_ahead].second.code());
+        const Cell_key& k = ordered[n].second;
         if(!is_leaf(k))
           continue;
         // The 3x3 block of level-L cells around k lies in a 2x2 block of level L-1 cells,
@@ -275,8 +291,14 @@ public:
         const std::int64_t j0 = k.j & 1 ? k.j : std::int64_t(k.j) - 1;
         for(std::int64_t nj = j0; nj <= j0 + 1; ++nj)
           for(std::int64_t ni = i0; ni <= i0 + 1; ++ni)
-            if(in_grid(level, ni, nj))
-              ensure_node(Cell_key(level - 1, std::uint64_t(ni >> 1), std::uint64_t(nj >> 1)));
+            if(in_grid(level, ni, nj)) {
+              const Key_code code = Cell_key(level - 1, std::uint64_t(ni >> 1), std::uint64_t(nj >> 1)).code();
+              Key_code& known = known_nodes[(std::uint64_t(code) * 0x9e3779b97f4a7c15ULL) >> (64 - known_bits)];
+              if(known != code) {
+                ensure_node(Cell_key::from_code(code));
+                known = code;
+              }
+            }
       }
     }
     m_new_leaves = nullptr;
@@ -294,6 +316,19 @@ public:
     const std::uint64_t j = level >= k.level ? std::uint64_t(k.j) << (level - k.level)
                                              : std::uint64_t(k.j) >> (k.level - level);
     return spread_bits(i) | (spread_bits(j) << 1);
+  }
+
+  /// Sorts `coded`, cells each with its `morton_code()`, by the code.
+  void sort_by_morton_code(std::vector<std::pair<std::uint64_t, Cell_key>>& coded) const
+  {
+    // Down to level 27 every cell has its own code and there is one order, which a radix sort
+    // finds fastest. Deeper cells tie: they keep the order std::sort gives them, as they did.
+    int deepest = 0;
+    for(const auto& c : coded) deepest = (std::max)(deepest, int(c.second.level));
+    if(deepest <= morton_level)
+      internal::radix_sort_by_key(coded);
+    else
+      std::sort(coded.begin(), coded.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   }
 
   /// `true` if leaves sharing an edge or a corner never differ by more than one level.
@@ -333,6 +368,8 @@ private:
   static constexpr std::uint32_t SPLIT = 0;
 
   static constexpr int morton_level = 27;
+  static constexpr int known_bits = 12; // balance()'s cache of known nodes: 4096 cells
+  static constexpr std::size_t prefetch_ahead = 8; // balance()'s look-ahead in its leaves
   static constexpr int snap_depth = 24;
 
   // spreads the low 32 bits of x to the even bits of the result
@@ -375,6 +412,8 @@ private:
     int e = 0;
     std::frexp(side_goal, &e); // side_goal in [2^(e-1), 2^e)
     m_root_side = std::ldexp(1.0, e);
+    for(std::size_t level = 0; level < m_sides.size(); ++level)
+      m_sides[level] = std::ldexp(m_root_side, -int(level));
     // The deepest level whose lattice (and the half-cell lattice of its templates) is exact in
     // double this far from the origin, and whose cells are not so small that squared lengths
     // underflow. Deeper cells are refused with the reason, not rounded.
@@ -488,6 +527,7 @@ private:
   GeomTraits m_traits;
   int m_max_depth;
   double m_root_side = 1;
+  std::array<double, 64> m_sides; // cell_side() of levels 0 to 63
   double m_ox = 0, m_oy = 0;
   std::uint32_t m_nx = 1, m_ny = 1;
   internal::Key_map m_nodes;

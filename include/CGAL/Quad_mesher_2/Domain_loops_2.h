@@ -7,6 +7,7 @@
 
 #include <CGAL/Quad_mesher_2/Domain_2.h>
 #include <CGAL/Quad_mesher_2/Meshing_error.h>
+#include <CGAL/Quad_mesher_2/internal/Box_tree.h>
 
 #include <CGAL/Bbox_2.h>
 #include <CGAL/Polygon_2.h>
@@ -74,89 +75,6 @@ std::string loops_format_point(const typename K::Point_2& p, const K& traits)
   return "(" + loops_format_double(CGAL::to_double(traits.compute_x_2_object()(p))) + ", " +
          loops_format_double(CGAL::to_double(traits.compute_y_2_object()(p))) + ")";
 }
-
-/// A bounding-volume hierarchy over boxes (median split on the longer axis), for box-overlap
-/// queries in O(log n + output) on well-spread input, whatever the clustering of the data.
-class Loops_box_tree
-{
-public:
-  explicit Loops_box_tree(const std::vector<Bbox_2>& boxes) : m_boxes(boxes)
-  {
-    m_items.resize(boxes.size());
-    for(std::size_t i = 0; i < boxes.size(); ++i) m_items[i] = static_cast<std::uint32_t>(i);
-    if(!boxes.empty()) {
-      m_nodes.reserve(2 * (boxes.size() / leaf_size + 1));
-      build(0, boxes.size());
-    }
-  }
-
-  /// Calls `f(i)` for every box `i` that overlaps `q` (closed boxes).
-  template <class F>
-  void query(const Bbox_2& q, F&& f) const
-  {
-    if(m_nodes.empty()) return;
-    std::vector<std::size_t> stack;
-    stack.push_back(0);
-    while(!stack.empty()) {
-      const Node& n = m_nodes[stack.back()];
-      stack.pop_back();
-      if(!CGAL::do_overlap(n.box, q)) continue;
-      if(n.left == no_child) {
-        for(std::size_t k = n.begin; k < n.end; ++k)
-          if(CGAL::do_overlap(m_boxes[m_items[k]], q)) f(static_cast<std::size_t>(m_items[k]));
-      } else {
-        stack.push_back(n.left);
-        stack.push_back(n.right);
-      }
-    }
-  }
-
-private:
-  static constexpr std::size_t leaf_size = 8;
-  static constexpr std::size_t no_child = (std::numeric_limits<std::size_t>::max)();
-
-  struct Node
-  {
-    Bbox_2 box;
-    std::size_t begin, end, left, right;
-  };
-
-  std::size_t build(std::size_t begin, std::size_t end)
-  {
-    const std::size_t id = m_nodes.size();
-    m_nodes.push_back(Node{Bbox_2(), begin, end, no_child, no_child});
-    Bbox_2 box = m_boxes[m_items[begin]];
-    double cx[2] = {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
-    double cy[2] = {cx[0], cx[1]};
-    for(std::size_t k = begin; k < end; ++k) {
-      const Bbox_2& b = m_boxes[m_items[k]];
-      box += b;
-      const double x = 0.5 * (b.xmin() + b.xmax()), y = 0.5 * (b.ymin() + b.ymax());
-      cx[0] = (std::min)(cx[0], x); cx[1] = (std::max)(cx[1], x);
-      cy[0] = (std::min)(cy[0], y); cy[1] = (std::max)(cy[1], y);
-    }
-    m_nodes[id].box = box;
-    if(end - begin <= leaf_size) return id;
-    const bool split_x = (cx[1] - cx[0]) >= (cy[1] - cy[0]);
-    const std::size_t mid = begin + (end - begin) / 2;
-    std::nth_element(m_items.begin() + begin, m_items.begin() + mid, m_items.begin() + end,
-                     [&](std::uint32_t a, std::uint32_t b) {
-                       const Bbox_2& ba = m_boxes[a];
-                       const Bbox_2& bb = m_boxes[b];
-                       return split_x ? (ba.xmin() + ba.xmax()) < (bb.xmin() + bb.xmax())
-                                      : (ba.ymin() + ba.ymax()) < (bb.ymin() + bb.ymax());
-                     });
-    const std::size_t l = build(begin, mid);
-    const std::size_t r = build(mid, end);
-    m_nodes[id].left = l;
-    m_nodes[id].right = r;
-    return id;
-  }
-
-  const std::vector<Bbox_2>& m_boxes;
-  std::vector<std::uint32_t> m_items;
-  std::vector<Node> m_nodes;
-};
 
 /// The work of `extract_loops()`: every check in the order documented there.
 template <class K>
@@ -359,7 +277,7 @@ private:
     const std::size_t ns = m_d.segments.size();
     m_seg_boxes.resize(ns);
     for(std::size_t s = 0; s < ns; ++s) m_seg_boxes[s] = seg_box(s);
-    m_tree.reset(new Loops_box_tree(m_seg_boxes));
+    m_tree.reset(new Box_tree(m_seg_boxes));
     std::vector<std::size_t> cand;
     for(std::size_t i = 0; i < ns; ++i) {
       cand.clear();
@@ -545,7 +463,7 @@ private:
   std::vector<std::size_t> m_loop_first_segment;
   std::vector<std::size_t> m_loop_of_segment;
   std::vector<Bbox_2> m_seg_boxes;
-  std::unique_ptr<Loops_box_tree> m_tree;
+  std::unique_ptr<Box_tree> m_tree;
   std::vector<bool> m_ccw;
   std::vector<std::size_t> m_crossings;
   std::vector<std::size_t> m_inside;

@@ -54,15 +54,18 @@ bool is_active_vertex(const Tree& tree, const Cell_key& k, std::int64_t X, std::
   return false;
 }
 
+// `siblings_are_leaves`: the caller knows that k's three siblings are leaves, so the corner
+// they share, their parent's centre (an even vertex), is not active, and is not looked up.
 template <class Tree>
-Template_choice choose_template(const Tree& tree, const Cell_key& k)
+Template_choice choose_template(const Tree& tree, const Cell_key& k, bool siblings_are_leaves = false)
 {
   static const int corner_dx[4] = { 0, 1, 1, 0 };
   static const int corner_dy[4] = { 0, 0, 1, 1 };
+  const int centre_dx = 1 - int(k.i & 1), centre_dy = 1 - int(k.j & 1);
   int count = 0, last = -1;
   for(int c = 0; c < 4; ++c)
-    if(is_active_vertex(tree, k, std::int64_t(k.i) + corner_dx[c],
-                        std::int64_t(k.j) + corner_dy[c])) {
+    if(!(siblings_are_leaves && corner_dx[c] == centre_dx && corner_dy[c] == centre_dy)
+       && is_active_vertex(tree, k, std::int64_t(k.i) + corner_dx[c], std::int64_t(k.j) + corner_dy[c])) {
       ++count;
       last = c;
     }
@@ -90,8 +93,7 @@ std::vector<Cell_key> leaves_in_morton_order(const Tree& tree)
   std::vector<std::pair<std::uint64_t, Cell_key>> coded;
   coded.reserve(tree.number_of_leaves());
   tree.for_each_leaf([&](const Cell_key& k) { coded.emplace_back(tree.morton_code(k), k); });
-  std::sort(coded.begin(), coded.end(),
-            [](const auto& a, const auto& b) { return a.first < b.first; });
+  tree.sort_by_morton_code(coded);
   std::vector<Cell_key> result;
   result.reserve(coded.size());
   for(const auto& c : coded)
@@ -113,7 +115,9 @@ templated_mesh(const Tree& tree, std::vector<Cell_key>* quad_cells = nullptr,
   Quad_mesh_2<Point_2> mesh;
   const int vertex_level = tree.vertex_level();
   const std::size_t expected = tree.number_of_leaves() * 2;
-  Key_map vertex_index(expected);
+  // about one vertex per leaf (most leaves stay one quad): a map sized for that keeps its
+  // load under a half and is half the memory to clear and miss in; more vertices rehash it
+  Key_map vertex_index(tree.number_of_leaves());
   std::uint32_t number_of_vertices = 0;
   mesh.quads.reserve(expected);
   if(quad_cells != nullptr) {
@@ -121,17 +125,40 @@ templated_mesh(const Tree& tree, std::vector<Cell_key>* quad_cells = nullptr,
     quad_cells->reserve(expected);
   }
 
-  for(const Cell_key& k : leaves_in_morton_order(tree)) {
-    const Quad_template& t = template_of(choose_template(tree, k));
-    const int shift = vertex_level - k.level - 1; // local half-cell units -> vertex lattice
-    const std::uint64_t x0 = std::uint64_t(k.i) << (shift + 1);
-    const std::uint64_t y0 = std::uint64_t(k.j) << (shift + 1);
+  const std::vector<Cell_key> leaves = leaves_in_morton_order(tree);
+  // Four sibling leaves come one after another in Morton order: half of their template
+  // lookups (those at their parent's centre) are known without looking (most leaves are so).
+  std::vector<const Quad_template*> templates(leaves.size());
+  for(std::size_t n = 0; n < leaves.size();) {
+    const Cell_key& k = leaves[n];
+    const bool family = k.level > 0 && (k.i & 1) == 0 && (k.j & 1) == 0 && n + 3 < leaves.size()
+                        && leaves[n + 1] == k.parent().child(1, 0) && leaves[n + 2] == k.parent().child(0, 1)
+                        && leaves[n + 3] == k.parent().child(1, 1);
+    for(const std::size_t end = family ? n + 4 : n + 1; n < end; ++n)
+      templates[n] = &template_of(choose_template(tree, leaves[n], family));
+  }
+  // The quads look up a vertex map far larger than the cache, one miss per lookup: those of
+  // the leaf `ahead` places on are prefetched meanwhile.
+  constexpr std::size_t ahead = 8;
+  // local half-cell units of leaf k -> its vertex lattice key
+  auto vertex_key = [vertex_level](const Cell_key& k, const Local_vertex& v) {
+    const int shift = vertex_level - k.level - 1;
+    return lattice_key((std::uint64_t(k.i) << (shift + 1)) + (std::uint64_t(v.x) << shift),
+                       (std::uint64_t(k.j) << (shift + 1)) + (std::uint64_t(v.y) << shift));
+  };
+  for(std::size_t n = 0; n < leaves.size(); ++n) {
+    if(n + ahead < leaves.size()) {
+      const Quad_template& t = *templates[n + ahead];
+      for(std::size_t q = 0; q < t.size; ++q)
+        for(const Local_vertex& v : t.quads[q])
+          vertex_index.prefetch(vertex_key(leaves[n + ahead], v));
+    }
+    const Cell_key& k = leaves[n];
+    const Quad_template& t = *templates[n];
     for(std::size_t q = 0; q < t.size; ++q) {
       typename Quad_mesh_2<Point_2>::Quad quad;
       for(int c = 0; c < 4; ++c) {
-        const Local_vertex& v = t.quads[q][c];
-        const Key_code key = lattice_key(x0 + (std::uint64_t(v.x) << shift),
-                                         y0 + (std::uint64_t(v.y) << shift));
+        const Key_code key = vertex_key(k, t.quads[q][c]);
         auto inserted = vertex_index.insert(key, number_of_vertices);
         number_of_vertices += inserted.second;
         quad[c] = *inserted.first;

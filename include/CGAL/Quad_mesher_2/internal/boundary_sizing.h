@@ -163,7 +163,7 @@ private:
   std::vector<double> m_loop_lengths;
   double m_detour;
   std::vector<Bbox_2> m_boxes; // before m_tree, which keeps a reference to it
-  Loops_box_tree m_tree;        // the box tree the loop validation uses
+  Box_tree m_tree;             // the box tree the loop validation uses
 };
 
 // Size samples for every narrow region of the domain: see above. Each segment is sampled

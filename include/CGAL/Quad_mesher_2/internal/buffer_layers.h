@@ -69,6 +69,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <memory>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -115,29 +116,30 @@ private:
 
 /// the oriented boundary loops of a quad mesh whose boundary vertices all have two boundary
 /// edges (the core after the clearance): each loop has the mesh on its left
+/// (`quads_at`: the quads at each vertex)
 inline std::vector<std::vector<std::size_t>>
-mesh_boundary_cycles(const std::vector<std::array<std::size_t, 4>>& quads, std::size_t n_points)
+mesh_boundary_cycles(const std::vector<std::array<std::size_t, 4>>& quads, const Vertex_quads& quads_at,
+                     std::size_t n_points)
 {
   // edge a -> b lies on the boundary if it is the only one of a -> b and b -> a; both are
   // edges of quads at a. Where several leave one vertex, the largest target wins (they cannot:
   // see the precondition).
-  const Vertex_quads quads_at(quads, n_points);
-  auto position = [&](std::size_t q, std::size_t a) {
-    int c = 0;
-    while(quads[q][c] != a) ++c;
-    return c;
-  };
   std::vector<std::size_t> next(n_points, std::size_t(-1));
-  for(std::size_t a = 0; a < n_points; ++a)
+  std::vector<std::array<std::size_t, 2>> around; // a's next and previous vertex in each quad at a
+  for(std::size_t a = 0; a < n_points; ++a) {
+    around.clear();
     for(std::size_t q : quads_at[a]) {
-      const std::size_t b = quads[q][(position(q, a) + 1) % 4];
+      int c = 0;
+      while(quads[q][c] != a) ++c;
+      around.push_back({ quads[q][(c + 1) % 4], quads[q][(c + 3) % 4] });
+    }
+    for(const auto& e : around) {
+      const std::size_t b = e[0];
       std::size_t uses = 0;
-      for(std::size_t r : quads_at[a]) {
-        const int c = position(r, a);
-        uses += (quads[r][(c + 1) % 4] == b ? 1 : 0) + (quads[r][(c + 3) % 4] == b ? 1 : 0);
-      }
+      for(const auto& f : around) uses += (f[0] == b ? 1 : 0) + (f[1] == b ? 1 : 0);
       if(uses == 1 && (next[a] == std::size_t(-1) || b > next[a])) next[a] = b;
     }
+  }
   std::vector<std::vector<std::size_t>> cycles;
   std::vector<bool> seen(n_points, false);
   for(std::size_t v = 0; v < n_points; ++v) {
@@ -151,6 +153,12 @@ mesh_boundary_cycles(const std::vector<std::array<std::size_t, 4>>& quads, std::
     cycles.push_back(std::move(c));
   }
   return cycles;
+}
+
+inline std::vector<std::vector<std::size_t>>
+mesh_boundary_cycles(const std::vector<std::array<std::size_t, 4>>& quads, std::size_t n_points)
+{
+  return mesh_boundary_cycles(quads, Vertex_quads(quads, n_points), n_points);
 }
 
 /// the parameter in [0, 1] of the point of segment (a, b) nearest to p
@@ -205,7 +213,7 @@ public:
       }
     }
     m_diag = std::hypot(xmax - xmin, ymax - ymin);
-    m_tree = std::make_unique<Loops_box_tree>(boxes);
+    m_tree = std::make_unique<Box_tree>(boxes);
   }
 
   const std::vector<Point_2d>& loop(std::size_t l) const { return m_loops[l]; }
@@ -290,7 +298,7 @@ private:
   std::vector<std::array<std::size_t, 2>> m_edge_of;
   std::vector<std::vector<double>> m_arc;
   std::vector<Bbox_2> m_boxes;
-  std::unique_ptr<Loops_box_tree> m_tree;
+  std::unique_ptr<Box_tree> m_tree;
   double m_diag = 0;
 };
 
@@ -404,7 +412,8 @@ public:
   /// refinement requests) if they do not match one to one.
   bool match_loops()
   {
-    m_cycles = mesh_boundary_cycles(m_mesh.quads, m_mesh.points.size());
+    m_quads_at = std::make_unique<Vertex_quads>(m_mesh.quads, m_mesh.points.size());
+    m_cycles = mesh_boundary_cycles(m_mesh.quads, *m_quads_at, m_mesh.points.size());
     m_cycle_loop.assign(m_cycles.size(), none);
     m_on_cycle.assign(m_mesh.points.size(), 0);
     std::vector<std::size_t> owner(m_loops.loops.size(), none);
@@ -450,7 +459,8 @@ public:
   /// Lemma 2 where the core allows (see the file comment).
   void apply_boundary_templates()
   {
-    const Vertex_quads quads_at(m_mesh.quads, m_mesh.points.size());
+    CGAL_precondition(m_quads_at != nullptr);
+    const Vertex_quads& quads_at = *m_quads_at;
     std::vector<char> adaptive(m_mesh.points.size(), 0);
     for(const auto& cyc : m_cycles)
       for(std::size_t b : cyc)
@@ -468,6 +478,7 @@ public:
         }
         if(!changed) break;
       }
+    m_quads_at.reset(); // the later stages add quads
   }
 
   /// Stage "templates", after apply_boundary_templates(): a new core quad over each notch that could not
@@ -585,6 +596,13 @@ public:
         add({ f, g, G[q], F[q] });
       return r;
     };
+    // the eight directions the tries step in, and the tries, made once
+    std::array<Point_2d, 8> direction;
+    for(int k = 0; k < 8; ++k) {
+      const double a = k * 3.14159265358979323846 / 4;
+      direction[k] = Point_2d{ std::cos(a), std::sin(a) };
+    }
+    std::vector<Point_2d> tries;
     for(int pass = 0; pass < 8; ++pass) {
       bool moved = false;
       for(std::size_t i = 0; i < n; ++i) {
@@ -595,14 +613,12 @@ public:
         Point_2d best_f = F[i], best_g = G[i];
         const Point_2d mid{ 0.5 * (F[(i + n - 1) % n].x + F[(i + 1) % n].x),
                             0.5 * (F[(i + n - 1) % n].y + F[(i + 1) % n].y) };
-        std::vector<Point_2d> tries;
+        tries.clear();
         for(double s : { 1.0, 0.5, 0.25 })
           tries.push_back(Point_2d{ F[i].x + s * (mid.x - F[i].x), F[i].y + s * (mid.y - F[i].y) });
         for(double s : { 0.2, 0.1, 0.05 })
-          for(int k = 0; k < 8; ++k) {
-            const double a = k * 3.14159265358979323846 / 4;
-            tries.push_back(Point_2d{ F[i].x + s * h * std::cos(a), F[i].y + s * h * std::sin(a) });
-          }
+          for(const Point_2d& d : direction)
+            tries.push_back(Point_2d{ F[i].x + s * h * d.x, F[i].y + s * h * d.y });
         for(const Point_2d& f : tries) {
           if(length_2d(minus_2d(f, start[i])) > reach[i]) continue;
           Point_2d g{ 0, 0 };
@@ -2140,6 +2156,8 @@ private:
   const Domain_loops_2<K>& m_loops;
   K m_traits;
   std::unique_ptr<Loop_locator> m_locator;
+  // the quads at each vertex from match_loops() to apply_boundary_templates(), which add none
+  std::unique_ptr<Vertex_quads> m_quads_at;
   std::vector<Point_2d> m_xy;
   std::vector<std::vector<std::size_t>> m_cycles;
   std::vector<std::size_t> m_cycle_loop;

@@ -53,7 +53,7 @@
 //
 // Cost: O(Q + V + (Q + V) / 64 * log S + K) for Q quads, V vertices, S segments and K
 // candidate pairs, in a few linear passes, no sort. Quad/segment and vertex/segment
-// candidates come from a bounding-box hierarchy over the segments (`Loops_box_tree`), one
+// candidates come from a bounding-box hierarchy over the segments (`Box_tree`), one
 // query per block of 64 consecutive quads or vertices: `templated_mesh` numbers both in
 // Morton order, so a block is compact and most blocks, far from the boundary, get no
 // candidate and no exact predicate. Inside/outside is passed from quad to quad through
@@ -123,7 +123,7 @@ public:
         m_boxes.push_back(bbox(a) + bbox(b));
       }
     }
-    m_tree.reset(new Loops_box_tree(m_boxes));
+    m_tree.reset(new Box_tree(m_boxes));
   }
   Domain_segments(const Domain_segments&) = delete;
   Domain_segments& operator=(const Domain_segments&) = delete;
@@ -175,7 +175,7 @@ private:
   std::vector<Segment_2> m_segments;
   std::vector<std::size_t> m_loop;
   std::vector<Bbox_2> m_boxes;
-  std::unique_ptr<Loops_box_tree> m_tree; // keeps a reference to m_boxes
+  std::unique_ptr<Box_tree> m_tree; // keeps a reference to m_boxes
 };
 
 template <class K>
@@ -233,9 +233,12 @@ private:
   {
     const std::size_t nq = m_mesh.quads.size(), nv = m_mesh.points.size();
     m_vq_begin.assign(nv + 1, 0);
-    for(std::size_t q = 0; q < nq; ++q)
+    m_quads_at.assign(nv, 0);
+    for(std::size_t q = 0; q < nq; ++q) {
+      for(int c = 0; c < 4; ++c) ++m_quads_at[m_mesh.quads[q][c]];
       if(m_state[q] == KEPT)
         for(int c = 0; c < 4; ++c) ++m_vq_begin[m_mesh.quads[q][c] + 1];
+    }
     for(std::size_t v = 0; v < nv; ++v) m_vq_begin[v + 1] += m_vq_begin[v];
     m_vq.resize(m_vq_begin[nv]);
     // m_vq_begin[v] serves as v's fill cursor, then is shifted back.
@@ -386,6 +389,15 @@ private:
     return n;
   }
 
+  // `true` if every input quad at v is still kept (most vertices: the fan search is skipped)
+  bool keeps_all_its_quads(std::size_t v) const
+  {
+    if(m_vq_begin[v + 1] - m_vq_begin[v] != m_quads_at[v]) return false;
+    for(std::size_t k = m_vq_begin[v]; k < m_vq_begin[v + 1]; ++k)
+      if(!kept(m_vq[k] / 4)) return false;
+    return true;
+  }
+
   // The fans of kept quads around v: fan f is m_fan_quads[m_fan_begin[f] .. m_fan_begin[f+1]),
   // in the order of a depth-first walk. A fan is a maximal run of kept quads joined by
   // kept-kept edges at v. Member buffers: no allocation per vertex.
@@ -469,6 +481,8 @@ private:
       const std::size_t v = vertex_work.back();
       vertex_work.pop_back();
       in_vwork[v] = 0;
+      if(keeps_all_its_quads(v)) continue; // one fan: the quads around a vertex of a
+                                            // conforming mesh are joined by their edges there
       fans_at(v);
       const std::size_t nf = m_fan_begin.size() - 1;
       if(nf <= 1) continue;
@@ -532,6 +546,7 @@ private:
   std::vector<std::size_t> m_candidates;
   std::vector<Index> m_nb;
   std::vector<Index> m_vq_begin, m_vq;
+  std::vector<Index> m_quads_at; // the number of input quads at each vertex
   // fans_at()'s buffers; m_local holds corners 4q+c
   std::vector<Index> m_local, m_fan_quads;
   std::vector<std::size_t> m_fan_begin, m_stack;

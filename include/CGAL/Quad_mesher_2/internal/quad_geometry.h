@@ -38,6 +38,18 @@ inline double dot_2d(const Point_2d& a, const Point_2d& b) { return a.x * b.x + 
 inline Point_2d minus_2d(const Point_2d& a, const Point_2d& b) { return Point_2d{a.x - b.x, a.y - b.y}; }
 inline double length_2d(const Point_2d& a) { return std::sqrt(a.x * a.x + a.y * a.y); }
 
+/// The angle in degrees, in [0, 360), swept counter-clockwise from a vector u to a vector v
+/// with cross(u, v) = `cross` and dot(u, v) = `dot`.
+inline double angle_degrees(double cross, double dot)
+{
+  double a = std::atan2(cross, dot) * (180.0 / 3.14159265358979323846);
+  if(a < 0)
+    a += 360.0;
+  if(a >= 360.0)
+    a = 0.0;
+  return a;
+}
+
 /// Interior angle in degrees, in [0, 360), at corner `p` of a counter-clockwise polygon whose
 /// previous and next vertices are `prev` and `next`: the angle swept counter-clockwise from
 /// `next - p` to `prev - p`. Convex corners give (0, 180), reflex corners (180, 360).
@@ -46,12 +58,7 @@ inline double corner_angle_degrees(const Point_2d& prev, const Point_2d& p, cons
 {
   const Point_2d e_next = minus_2d(next, p);
   const Point_2d e_prev = minus_2d(prev, p);
-  double a = std::atan2(cross_2d(e_next, e_prev), dot_2d(e_next, e_prev)) * (180.0 / 3.14159265358979323846);
-  if(a < 0)
-    a += 360.0;
-  if(a >= 360.0)
-    a = 0.0;
-  return a;
+  return angle_degrees(cross_2d(e_next, e_prev), dot_2d(e_next, e_prev));
 }
 
 /// Scaled Jacobian at corner `p` of a counter-clockwise polygon:
@@ -83,6 +90,21 @@ inline std::array<double, 4> quad_corner_scaled_jacobians(const std::array<Point
   std::array<double, 4> s;
   for(int k = 0; k < 4; ++k)
     s[k] = corner_scaled_jacobian(q[(k + 3) % 4], q[k], q[(k + 1) % 4]);
+  return s;
+}
+
+/// The same from `len`, the quad's `quad_edge_lengths()`: a corner's edges are edge k and edge
+/// k-1 reversed, whose lengths are the same to the bit.
+inline std::array<double, 4> quad_corner_scaled_jacobians(const std::array<Point_2d, 4>& q,
+                                                          const std::array<double, 4>& len)
+{
+  std::array<double, 4> s;
+  for(int k = 0; k < 4; ++k) {
+    const double l = len[k] * len[(k + 3) % 4];
+    s[k] = 0.0;
+    if(l > 0)
+      s[k] = (std::max)(-1.0, (std::min)(1.0, cross_2d(minus_2d(q[(k + 1) % 4], q[k]), minus_2d(q[(k + 3) % 4], q[k])) / l));
+  }
   return s;
 }
 
