@@ -725,6 +725,33 @@ TEST(Buffer_layers, multi_element_airfoils_meet_45_135)
   }
 }
 
+// The bird (../shared/data, skipped when absent) and its mirror image: every angle under 45
+// degrees is at an input corner (its tips, 11.5 degrees the sharpest), and none is over 135,
+// the sharp corners' quads included. The mirrored bird kept 137.4 degrees in the quad
+// spanning its 11.5-degree tip while that quad's other angles counted less beyond [45, 135].
+TEST(Buffer_layers, bird_and_its_mirror_image_meet_45_135_but_at_sharp_corners)
+{
+  const std::string name = "bird/bird.poly";
+  if(!std::ifstream(std::string(QM2_SHARED_DATA_DIR) + "/" + name))
+    GTEST_SKIP() << "no " << name << " in the shared data";
+  Domain mirrored = load(name);
+  for(Point& p : mirrored.points) p = Point(-p.x(), p.y());
+  for(Point& p : mirrored.holes) p = Point(-p.x(), p.y());
+  for(const auto& [domain, label] : { std::make_pair(load(name), std::string("bird")),
+                                      std::make_pair(mirrored, std::string("mirrored bird")) }) {
+    Mesh m;
+    mesh_and_check(domain, label, QM::Mesh_criteria_2<K>(), &m);
+    const std::set<Point> input(domain.points.begin(), domain.points.end());
+    for(std::size_t q = 0; q < m.quads.size(); ++q)
+      for(int c = 0; c < 4; ++c) {
+        const double a = qm2_checks::corner_angle(m, q, c);
+        EXPECT_LE(a, 135 + 1e-9) << label << ": quad " << q;
+        if(a < 45 - 1e-9)
+          EXPECT_TRUE(input.count(m.points[m.quads[q][c]]) != 0) << label << ": " << a << " degrees off the input corners";
+      }
+  }
+}
+
 TEST(Buffer_layers, dumbbell_with_a_narrow_channel_meets_45_135)
 {
   expect_angles_45_135(mesh_and_check(polygons({ dumbbell() }, {}), "dumbbell"), "dumbbell");

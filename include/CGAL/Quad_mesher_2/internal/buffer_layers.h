@@ -1249,13 +1249,14 @@ private:
     // an angle an input corner alpha forces is not the strip's fault: the quad is judged by its
     // other three, which fit in [45, 135] (they sum to 360 - alpha; with [alpha, 180 - alpha]
     // costing what [45, 135] costs elsewhere, as the paper allows, bird's 11.5-degree tip kept
-    // 138.8). Beyond 45 their deviation still counts less than elsewhere, as it did: on a
-    // needle's tip they cannot all fit.
+    // 138.8). Beyond 45 their deviation counts in full from a 6-degree corner up (there they
+    // fit: the mirrored bird's tip kept 137.4 while it counted less) and less below, as it
+    // did: on a needle's tip they cannot all fit.
     if(b < 1000.0)
       for(int k = 0; k < 4; ++k)
         if(input_corner_angle(q[k]) < 45.0 // cheap test first: the cost runs in inner loops
            && forced_angle(q[k], corner_angle_degrees(P[(k + 3) % 4], P[k], P[(k + 1) % 4]))) {
-          const double scale = 45.0 / (90.0 - input_corner_angle(q[k]));
+          const double scale = input_corner_angle(q[k]) >= 6.0 ? 1.0 : 45.0 / (90.0 - input_corner_angle(q[k]));
           b = 0;
           for(int j = 0; j < 4; ++j)
             if(j != k) {
