@@ -36,6 +36,19 @@ Tree unit_tree(int max_depth = 8)
   return Tree(K::Iso_rectangle_2(K::Point_2(0, 0), K::Point_2(1, 1)), max_depth);
 }
 
+// a tree of depth max_depth refined at `points` random points of [0, 2]^2, each to a random
+// level, then balanced
+Tree random_balanced_tree(std::mt19937& rng, int max_depth, int points)
+{
+  Tree t = unit_tree(max_depth);
+  std::uniform_real_distribution<double> u(0, 2);
+  std::uniform_int_distribution<int> lv(1, max_depth);
+  for(int p = 0; p < points; ++p)
+    t.refine_at(K::Point_2(u(rng), u(rng)), lv(rng));
+  t.balance();
+  return t;
+}
+
 void refine_uniformly(Tree& t, int level)
 {
   t.refine([&](const Cell_key& k) { return k.level < level; });
@@ -154,13 +167,7 @@ TEST(Balanced_quadtree_2, balance_random_trees)
 {
   std::mt19937 rng(7);
   for(int trial = 0; trial < 30; ++trial) {
-    Tree t = unit_tree(9);
-    std::uniform_real_distribution<double> u(0, 2);
-    std::uniform_int_distribution<int> lv(1, 9);
-    int n = 1 + trial % 6;
-    for(int p = 0; p < n; ++p)
-      t.refine_at(K::Point_2(u(rng), u(rng)), lv(rng));
-    t.balance();
+    const Tree t = random_balanced_tree(rng, 9, 1 + trial % 6);
     ASSERT_TRUE(t.is_strongly_balanced());
     if(t.number_of_leaves() < 2500) {
       ASSERT_TRUE(brute_force_balanced(t));
@@ -179,12 +186,7 @@ TEST(Balanced_quadtree_2, templated_mesh_takes_each_leafs_own_template)
 {
   std::mt19937 rng(11);
   for(int trial = 0; trial < 20; ++trial) {
-    Tree t = unit_tree(8);
-    std::uniform_real_distribution<double> u(0, 2);
-    std::uniform_int_distribution<int> lv(1, 8);
-    for(int p = 0; p < 1 + trial % 5; ++p)
-      t.refine_at(K::Point_2(u(rng), u(rng)), lv(rng));
-    t.balance();
+    const Tree t = random_balanced_tree(rng, 8, 1 + trial % 5);
     std::vector<Cell_key> cells;
     const auto mesh = CGAL::Quad_mesher_2::internal::templated_mesh(t, &cells);
     ASSERT_EQ(cells.size(), mesh.quads.size());

@@ -84,17 +84,18 @@ inline std::array<double, 4> quad_corner_angles(const std::array<Point_2d, 4>& q
   return a;
 }
 
-/// The four corner scaled Jacobians of the quad `q`.
-inline std::array<double, 4> quad_corner_scaled_jacobians(const std::array<Point_2d, 4>& q)
+/// Edge lengths of `q`: entry k is the length of edge (q[k], q[k+1]).
+inline std::array<double, 4> quad_edge_lengths(const std::array<Point_2d, 4>& q)
 {
-  std::array<double, 4> s;
+  std::array<double, 4> l;
   for(int k = 0; k < 4; ++k)
-    s[k] = corner_scaled_jacobian(q[(k + 3) % 4], q[k], q[(k + 1) % 4]);
-  return s;
+    l[k] = length_2d(minus_2d(q[(k + 1) % 4], q[k]));
+  return l;
 }
 
-/// The same from `len`, the quad's `quad_edge_lengths()`: a corner's edges are edge k and edge
-/// k-1 reversed, whose lengths are the same to the bit.
+/// The four corner scaled Jacobians of the quad `q` (see `corner_scaled_jacobian()`) from
+/// `len`, its `quad_edge_lengths()`: a corner's edges are edge k and edge k-1 reversed, whose
+/// lengths are the same to the bit, so callers that have the lengths do not take them again.
 inline std::array<double, 4> quad_corner_scaled_jacobians(const std::array<Point_2d, 4>& q,
                                                           const std::array<double, 4>& len)
 {
@@ -106,6 +107,12 @@ inline std::array<double, 4> quad_corner_scaled_jacobians(const std::array<Point
       s[k] = (std::max)(-1.0, (std::min)(1.0, cross_2d(minus_2d(q[(k + 1) % 4], q[k]), minus_2d(q[(k + 3) % 4], q[k])) / l));
   }
   return s;
+}
+
+/// The four corner scaled Jacobians of the quad `q`.
+inline std::array<double, 4> quad_corner_scaled_jacobians(const std::array<Point_2d, 4>& q)
+{
+  return quad_corner_scaled_jacobians(q, quad_edge_lengths(q));
 }
 
 /// The scaled Jacobian of a quad: the minimum over its four corners.
@@ -123,15 +130,6 @@ inline double quad_max_angle_deviation(const std::array<Point_2d, 4>& q)
   for(double x : a)
     d = (std::max)(d, std::abs(x - 90.0));
   return d;
-}
-
-/// Edge lengths of `q`: entry k is the length of edge (q[k], q[k+1]).
-inline std::array<double, 4> quad_edge_lengths(const std::array<Point_2d, 4>& q)
-{
-  std::array<double, 4> l;
-  for(int k = 0; k < 4; ++k)
-    l[k] = length_2d(minus_2d(q[(k + 1) % 4], q[k]));
-  return l;
 }
 
 /// Longest over shortest edge of `q`; +infinity if some edge has zero length.
