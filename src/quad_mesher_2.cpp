@@ -130,6 +130,13 @@ int run(const Options& opt)
       std::cerr << "stage " << stage.first << ": " << stage.second << " s\n";
   }
 
+  if(opt.verbose)
+    for(std::size_t r = 0; r < mesher.round_figures().size(); ++r) {
+      const auto& f = mesher.round_figures()[r];
+      std::cerr << "round " << r + 1 << ": " << f.quads << " quads, " << (f.valid ? "valid" : "invalid") << ", "
+                << f.invalid_quads << " buffer quads not convex, " << f.bad_angle_quads
+                << " with an unforced angle out, " << f.refinement_requests << " refinement requests\n";
+    }
   // runs past the clearance checked the whole mesh already (stage "check")
   t = Clock::now();
   const QM::Mesh_quality_2 quality = mesher.quality() ? *mesher.quality() : QM::compute_quality(mesh);

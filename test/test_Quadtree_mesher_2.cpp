@@ -281,4 +281,25 @@ TEST(Quadtree_mesher_2, single_point_and_collinear_points)
   EXPECT_TRUE(qm2_checks::is_conforming(m));
 }
 
+// The rounds of bahamas_islands (`quad-mesher -v`): invalid rounds count for nothing; the count
+// of quads with an unforced angle out fell 420, 65, 19, 3, 1 over five valid rounds (a fixed
+// budget of three angle rounds stopped at 3), then went 2, 1, 2, 2: the fourth valid round in a
+// row that does not lower it ends the rounds, and the best is the round with 1.
+TEST(Quadtree_mesher_2, angle_rounds_go_on_while_the_count_falls)
+{
+  QM::internal::Angle_rounds rounds(Mesher::max_stalled_angle_rounds);
+  EXPECT_FALSE(rounds.has_valid_round());
+  const std::vector<std::pair<bool, std::size_t>> seen = {
+    { false, 422 }, { false, 420 }, { true, 420 }, { false, 69 }, { true, 65 }, { false, 21 },
+    { true, 19 },   { true, 3 },    { true, 1 },   { true, 2 },   { true, 1 },  { true, 2 }, { true, 2 }
+  };
+  const std::vector<bool> best = { false, false, true, false, true, false, true, true, true, false, false, false, false };
+  for(std::size_t r = 0; r < seen.size(); ++r) {
+    EXPECT_EQ(rounds.record(seen[r].first, seen[r].second), best[r]) << "round " << r + 1;
+    EXPECT_EQ(rounds.go_on(), r + 1 < seen.size()) << "round " << r + 1;
+  }
+  EXPECT_EQ(rounds.best(), 1u);
+  EXPECT_TRUE(rounds.has_valid_round());
+}
+
 } // namespace qm2_test_mesher

@@ -12,6 +12,7 @@
 #include <CGAL/Quad_mesher_2/Mesh_quality_2.h>
 #include <CGAL/Quad_mesher_2/Meshing_error.h>
 #include <CGAL/Quad_mesher_2/Quad_mesh_2.h>
+#include <CGAL/Quad_mesher_2/internal/angle_rounds.h>
 #include <CGAL/Quad_mesher_2/internal/apply_templates.h>
 #include <CGAL/Quad_mesher_2/internal/boundary_sizing.h>
 #include <CGAL/Quad_mesher_2/internal/buffer_layers.h>
@@ -265,19 +266,19 @@ public:
   /// layers would have invalid quads the quadtree is refined there and the stages run again,
   /// at most `max_refinement_rounds` times in all; a mesh with invalid quads is never
   /// returned. Where a valid buffer has angles outside [45°, 135°] that no input corner
-  /// forces, the quadtree is refined there, in at most `max_angle_rounds` such rounds, each
-  /// kept only while it lowers their count; a round the angle refinement made invalid is
+  /// forces, the quadtree is refined there, round after round while their count falls and in
+  /// at most `max_stalled_angle_rounds` valid rounds that do not lower it; a round the angle refinement made invalid is
   /// refined for validity first. The valid round with the fewest such quads is the one
   /// returned (kept from its round if a later one was worse).
   Mesh run(Stage last = Stage::POINTS)
   {
     m_extra_refinement.clear();
+    m_round_figures.clear();
     m_quality.reset();
-    std::size_t best_bad = std::size_t(-1);
+    internal::Angle_rounds angle_rounds(max_stalled_angle_rounds);
     // the best valid round's mesh and state, kept while later rounds try for better angles:
     // building it again would cost a whole round
     Round_state best;
-    int angle_rounds = 0;
     for(m_rounds = 1;; ++m_rounds) {
       build_quadtree();
       Mesh mesh = core_mesh();
@@ -294,7 +295,7 @@ public:
         }
         if(queue_refinement(requests) > 0 && m_rounds < max_refinement_rounds)
           continue;
-        if(best_bad != std::size_t(-1))
+        if(angle_rounds.has_valid_round())
           return restore_round(std::move(best));
         std::ostringstream msg;
         msg << "isolated point " << input_point_name(m_point_names[m_lost_points.front()]) << " (" << requests.front().first.x
@@ -314,27 +315,22 @@ public:
                          && quality.is_valid() && quality.number_of_near_duplicate_vertices == 0;
       // refined for validity first; for angles only once a round is valid
       const auto& requests = valid ? m_buffer_report.angle_requests : m_buffer_report.refine_requests;
+      m_round_figures.push_back({ mesh.quads.size(), m_buffer_report.invalid_quads,
+                                  m_buffer_report.bad_angle_quads, valid, requests.size() });
       // a stage on its way is not refined for angles: they are the finished buffer's
       if(valid && (m_buffer_report.bad_angle_quads == 0 || last < Stage::BUFFER2))
         return mesh;
-      const bool improved = valid && m_buffer_report.bad_angle_quads < best_bad;
-      if(improved)
-        best_bad = m_buffer_report.bad_angle_quads;
+      const bool improved = angle_rounds.record(valid, m_buffer_report.bad_angle_quads);
       const std::size_t added = queue_refinement(requests);
-      // an angle round that came out invalid is refined for validity, within the round budget;
-      // a valid one that did not lower the count does not end the angle rounds: the next
-      // pairing of the finer strip may (a 25-gon kept a fan at 165.6 degrees for two rounds)
-      const bool more = added > 0 && m_rounds < max_refinement_rounds
-                        && (best_bad == std::size_t(-1) || !valid || angle_rounds < max_angle_rounds);
-      if(more) {
+      // an angle round that came out invalid is refined for validity, within the round budget
+      if(added > 0 && m_rounds < max_refinement_rounds && angle_rounds.go_on()) {
         if(improved)
           best = save_round(std::move(mesh));
-        angle_rounds += valid ? 1 : 0;
         continue;
       }
-      if(valid && m_buffer_report.bad_angle_quads == best_bad)
+      if(valid && m_buffer_report.bad_angle_quads == angle_rounds.best())
         return mesh; // angles outside [45, 135] stay; the quality report shows them
-      if(best_bad != std::size_t(-1))
+      if(angle_rounds.has_valid_round())
         return restore_round(std::move(best));
       std::ostringstream msg;
       msg << "the buffer layers could not be built";
@@ -358,10 +354,23 @@ public:
   const std::optional<Mesh_quality_2>& quality() const { return m_quality; }
   /// how many times `run()` built the quadtree (1 + refinement rounds for the buffer layers)
   int rounds() const { return m_rounds; }
+  /// what one round of `run()` past the clearance found: how it went decides the next
+  struct Round_figures
+  {
+    std::size_t quads = 0;
+    std::size_t invalid_quads = 0;    ///< buffer quads not strictly convex
+    std::size_t bad_angle_quads = 0;  ///< buffer quads with an angle out that no input corner forces
+    bool valid = false;               ///< the whole mesh passed its check
+    std::size_t refinement_requests = 0; ///< places it asked to be finer (for validity, or angles once valid)
+  };
+  /// the rounds of the last `run()` past the clearance, in order (the one returned may be an
+  /// earlier one than the last: see `run()`)
+  const std::vector<Round_figures>& round_figures() const { return m_round_figures; }
   /// what the buffer stages did in the last round
   const internal::Buffer_report& buffer_report() const { return m_buffer_report; }
-  static constexpr int max_refinement_rounds = 8;
-  static constexpr int max_angle_rounds = 3;
+  static constexpr int max_refinement_rounds = 16;
+  /// valid rounds refined for angles that did not lower their count, at most
+  static constexpr int max_stalled_angle_rounds = 3;
 
   /// quads removed by the clearance: outside, crossing the boundary, near it, single
   const std::array<std::size_t, 4>& removed_by_clearance() const { return m_removed; }
@@ -795,6 +804,7 @@ private:
   std::vector<std::size_t> m_lost_points; // by anchored point: see clear_buffer_zone()
   std::vector<std::size_t> m_point_names; // the input index of each anchored point
   int m_rounds = 0;
+  std::vector<Round_figures> m_round_figures;
   Timings m_timings;
 };
 

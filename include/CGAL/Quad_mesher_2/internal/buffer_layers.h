@@ -1274,12 +1274,13 @@ private:
   // along it), unlike a quad sheared by its F points, which the optimizer straightens: it
   // costs as much as a hundred degrees more (lake_superior_jigsaw kept a 135.9-degree corner
   // whole, one quad spanning it, rather than shear a row; the mirrored guitar kept a chord
-  // node at 174.5 degrees beside a left-out vertex).
+  // node at 174.5 degrees beside a left-out vertex). So does a quad over 135 degrees on a side
+  // of a corner over 270 degrees (wide_side_of_reflex_fan()).
   double strip_cost(const Quad& q) const
   {
     const double b = cost(q);
     if(b <= 45.0 + angle_tolerance || b >= 1000.0) return b;
-    return fixed_angle_out_of_range(q) >= 0 ? b + 100.0 : b;
+    return fixed_angle_out_of_range(q) >= 0 || wide_side_of_reflex_fan(q) ? b + 100.0 : b;
   }
 
   // the corner (0 to 3) of q at a boundary node between two others whose angle is out of
@@ -1293,6 +1294,21 @@ private:
       if(std::abs(angle - 90.0) > 45.0 + angle_tolerance && !forced_angle(v, angle)) return k;
     }
     return -1;
+  }
+
+  // true if q has over 135 degrees at an input corner over 270 degrees, between a boundary
+  // node and an F point: a side of a fan of two there, or of a fan of three with an F point
+  // off to one side. A fan of two at such a corner keeps over 135 degrees in one of its quads
+  // however its F point moves (the pairing took two quads of about 147 degrees at a 294-degree
+  // island tip over a fan of three whose middle F point, flat for now, the optimizer moves).
+  bool wide_side_of_reflex_fan(const Quad& q) const
+  {
+    for(int k = 0; k < 4; ++k) {
+      const std::size_t v = q[k], u = q[(k + 3) % 4], w = q[(k + 1) % 4];
+      if(!(input_corner_angle(v) > 270.0) || on_boundary_chain(u) == on_boundary_chain(w)) continue;
+      if(corner_angle_degrees(m_xy[u], m_xy[v], m_xy[w]) > 135.0 + angle_tolerance) return true;
+    }
+    return false;
   }
 
   // an input vertex, a point on an input edge, or a gap's candidate extra node (an id past the
