@@ -206,6 +206,15 @@ public:
         add_leaf(k.child(dx, dy));
   }
 
+  /// Makes room for about `n` more leaves, and their ancestors, before refining to a size
+  /// known in advance: the node map and the list of new leaves then do not grow step by step,
+  /// each step a copy into fresh memory (a rehash, one cache miss per node).
+  void reserve(std::size_t n)
+  {
+    m_nodes.reserve(m_nodes.size() + n + n / 3);
+    m_unbalanced.reserve(m_unbalanced.size() + n);
+  }
+
   /// Splits leaves, children first, as long as `needs_split(const Cell_key&)` says so.
   /// Throws `Meshing_error` if it asks to split a cell at `max_depth()`.
   template <class SplitPredicate>
@@ -260,6 +269,15 @@ public:
     // Only leaves made since the last balance can be too fine for a neighbour: the tree was
     // balanced before, and splitting never coarsens anything.
     std::vector<std::vector<Cell_key>> by_level(m_max_depth + 1);
+    {
+      // each level's list in one allocation: a million leaves would copy themselves on
+      // every growth
+      std::vector<std::size_t> count(m_max_depth + 1, 0);
+      for(const Cell_key& k : m_unbalanced)
+        ++count[k.level];
+      for(int level = 0; level <= m_max_depth; ++level)
+        by_level[level].reserve(count[level]);
+    }
     for(const Cell_key& k : m_unbalanced)
       by_level[k.level].push_back(k);
     m_unbalanced.clear();

@@ -604,6 +604,18 @@ private:
     // it), which saves the quarter of the cells that a disc's box holds outside the disc.
     // A cell that no segment meets lies on one side, which its parent's tells, or its centre.
     enum Side : unsigned char { UNKNOWN, INSIDE, OUTSIDE };
+    // Room for the cells of that size the domain's area holds: fewer than it gets (the
+    // boundary's cells come on top), so never a larger node map than growing would make.
+    auto x_of = m_traits.compute_x_2_object();
+    auto y_of = m_traits.compute_y_2_object();
+    double area = 0; // the loops' signed areas: holes run clockwise
+    for(const auto& loop : m_loops.loops)
+      for(std::size_t k = 0, n = loop.vertices.size(); k < n; ++k) {
+        const Point_2& a = m_domain.points[loop.vertices[k]];
+        const Point_2& b = m_domain.points[loop.vertices[(k + 1) % n]];
+        area += CGAL::to_double(x_of(a)) * CGAL::to_double(y_of(b)) - CGAL::to_double(x_of(b)) * CGAL::to_double(y_of(a));
+      }
+    m_tree->reserve(std::size_t(area / 2 / (side * side)));
     const internal::Domain_segments<GeomTraits> boundary(m_domain, m_loops, m_traits);
     auto meets_boundary = [&](const Cell_key& k) { // by boxes: it may say yes too often
       bool any = false;
