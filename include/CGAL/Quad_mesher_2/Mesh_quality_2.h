@@ -196,6 +196,7 @@ inline std::size_t count_near_duplicate_pairs(const std::vector<Point_2d>& pts, 
     }
   };
   std::vector<Entry> sorted;
+  sorted.reserve(pts.size()); // all are used in a mesher's output: no copies on growth
   for(std::size_t v = 0; v < pts.size(); ++v)
     if(used[v])
       sorted.push_back(Entry{ tol > 0 ? std::int64_t(std::floor((pts[v].x - lo.x) / tol)) : 0, pts[v].x, pts[v].y });
