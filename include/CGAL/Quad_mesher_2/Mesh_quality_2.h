@@ -487,7 +487,6 @@ Mesh_quality_2 compute_quality(const Quad_mesh_2<Point_2>& mesh)
   // Edge usage: non-manifold edges and boundary (used-once) halfedges.
   const internal::Quality_edge_table table(mesh.quads, skip, np);
   std::vector<std::size_t> boundary;
-  std::vector<char> is_boundary(4 * nq, 0);
   for(std::size_t v = 0; v < np; ++v) {
     std::size_t i = table.bucket_begin(v);
     const std::size_t end = table.bucket_end(v);
@@ -502,7 +501,6 @@ Mesh_quality_2 compute_quality(const Quad_mesh_2<Point_2>& mesh)
       if(uses == 1) {
         const std::size_t h = table.code(i) / 2;
         boundary.push_back(h);
-        is_boundary[h] = 1;
       } else if(uses > 2 || forward != 1) {
         ++r.number_of_non_manifold_edges;
       }
