@@ -416,6 +416,15 @@ public:
   {
     m_quads_at = std::make_unique<Vertex_quads>(m_mesh.quads, m_mesh.points.size());
     m_cycles = mesh_boundary_cycles(m_mesh.quads, *m_quads_at, m_mesh.points.size());
+    // The layers add a few quads and points per core boundary vertex (about two each on a
+    // disc): room for four each now, or the first one added copies the whole core's arrays
+    // into fresh memory.
+    std::size_t boundary_vertices = 0;
+    for(const auto& cyc : m_cycles)
+      boundary_vertices += cyc.size();
+    m_mesh.quads.reserve(m_mesh.quads.size() + 4 * boundary_vertices);
+    m_mesh.points.reserve(m_mesh.points.size() + 4 * boundary_vertices);
+    m_xy.reserve(m_xy.size() + 4 * boundary_vertices);
     m_cycle_loop.assign(m_cycles.size(), none);
     m_on_cycle.assign(m_mesh.points.size(), 0);
     std::vector<std::size_t> owner(m_loops.loops.size(), none);
