@@ -6,20 +6,14 @@
 #define CGAL_QUAD_MESHER_2_INTERNAL_KEY_MAP_H
 
 #include <CGAL/Quad_mesher_2/Cell_key.h>
+#include <CGAL/Quad_mesher_2/internal/Huge_page_allocator.h>
 
 #include <CGAL/assertions.h>
 
 #include <cstddef>
 #include <cstdint>
-#include <cstdlib>
-#include <memory>
-#include <new>
 #include <utility>
 #include <vector>
-
-#if defined(__linux__)
-#include <sys/mman.h> // madvise
-#endif
 
 namespace CGAL {
 namespace Quad_mesher_2 {
@@ -136,55 +130,12 @@ private:
     std::uint32_t value;
   };
   static_assert(sizeof(Slot) == 16, "a slot takes 16 bytes");
-
-  // A map of millions of slots is probed at random: with 4 kB pages nearly every probe also
-  // misses the TLB, and filling the map takes a page fault per 4 kB. Where the system offers
-  // them on request (Linux's transparent huge pages, "madvise" mode included), maps of 4 MB
-  // and more ask for 2 MB pages. A hint only: the slots are the same either way.
-  template <class T>
-  struct Slot_allocator
-  {
-    typedef T value_type;
-    Slot_allocator() = default;
-    template <class U>
-    Slot_allocator(const Slot_allocator<U>&) {}
-
-    T* allocate(std::size_t n)
-    {
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-      if(is_large(n)) {
-        void* p = std::aligned_alloc(huge_page, (n * sizeof(T) + huge_page - 1) / huge_page * huge_page);
-        if(p == nullptr)
-          throw std::bad_alloc();
-        ::madvise(p, n * sizeof(T), MADV_HUGEPAGE);
-        return static_cast<T*>(p);
-      }
-#endif
-      return std::allocator<T>().allocate(n);
-    }
-    void deallocate(T* p, std::size_t n)
-    {
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-      if(is_large(n)) {
-        std::free(p);
-        return;
-      }
-#endif
-      std::allocator<T>().deallocate(p, n);
-    }
-    template <class U>
-    bool operator==(const Slot_allocator<U>&) const { return true; }
-    template <class U>
-    bool operator!=(const Slot_allocator<U>&) const { return false; }
-
-  private:
-    static constexpr std::size_t huge_page = std::size_t(1) << 21;
-    static bool is_large(std::size_t n) { return n * sizeof(T) >= 2 * huge_page; }
-  };
+  // probed at random: with 4 kB pages nearly every probe of a large map also misses the TLB
+  typedef std::vector<Slot, Huge_page_allocator<Slot>> Slots;
 
   void rehash(std::size_t capacity)
   {
-    std::vector<Slot, Slot_allocator<Slot>> slots(capacity, Slot{ 0, empty_hi, 0 });
+    Slots slots(capacity, Slot{ 0, empty_hi, 0 });
     std::size_t mask = capacity - 1;
     for(const Slot& old : m_slots) {
       if(old.hi == empty_hi)
@@ -198,7 +149,7 @@ private:
     m_mask = mask;
   }
 
-  std::vector<Slot, Slot_allocator<Slot>> m_slots;
+  Slots m_slots;
   std::size_t m_size = 0;
   std::size_t m_mask = 0;
 };
