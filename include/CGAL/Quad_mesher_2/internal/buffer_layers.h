@@ -402,6 +402,7 @@ public:
   {
     m_locator = make_loop_locator(domain, loops);
     m_chord_tolerance = 1e-3 * m_locator->diagonal();
+    m_xy.reserve(mesh.points.capacity()); // the room the clearance left for the layers' points
     m_xy.resize(mesh.points.size());
     for(std::size_t v = 0; v < mesh.points.size(); ++v)
       m_xy[v] = to_point_2d(mesh.points[v]);
@@ -417,8 +418,8 @@ public:
     m_quads_at = std::make_unique<Vertex_quads>(m_mesh.quads, m_mesh.points.size());
     m_cycles = mesh_boundary_cycles(m_mesh.quads, *m_quads_at, m_mesh.points.size());
     // The layers add a few quads and points per core boundary vertex (about two each on a
-    // disc): room for four each now, or the first one added copies the whole core's arrays
-    // into fresh memory.
+    // disc): room for four each now (the clearance's core has it already), or the first one
+    // added copies the whole core's arrays into fresh memory.
     std::size_t boundary_vertices = 0;
     for(const auto& cyc : m_cycles)
       boundary_vertices += cyc.size();
