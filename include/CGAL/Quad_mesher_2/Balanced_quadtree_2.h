@@ -7,6 +7,7 @@
 
 #include <CGAL/Quad_mesher_2/Cell_key.h>
 #include <CGAL/Quad_mesher_2/Meshing_error.h>
+#include <CGAL/Quad_mesher_2/internal/Huge_page_allocator.h>
 #include <CGAL/Quad_mesher_2/internal/Key_map.h>
 #include <CGAL/Quad_mesher_2/internal/radix_sort.h>
 
@@ -47,6 +48,10 @@ public:
   typedef typename GeomTraits::FT FT;
   typedef typename GeomTraits::Point_2 Point_2;
   typedef typename GeomTraits::Iso_rectangle_2 Iso_rectangle_2;
+  /// cells with their `morton_code()`, as `sort_by_morton_code()` takes them; the lists of a
+  /// million cells are fresh memory, in large pages where the system offers them
+  typedef std::vector<std::pair<std::uint64_t, Cell_key>,
+                      internal::Huge_page_allocator<std::pair<std::uint64_t, Cell_key>>> Morton_coded_cells;
 
   /// Builds a tree of root cells only, covering `bbox` with a margin, able to refine down to
   /// `max_depth` (cells of side `root_side/2^max_depth`; templates add half of that), at most
@@ -206,6 +211,15 @@ public:
         add_leaf(k.child(dx, dy));
   }
 
+  /// Makes room for about `n` more leaves, and their ancestors, before refining to a size
+  /// known in advance: the node map and the list of new leaves then do not grow step by step,
+  /// each step a copy into fresh memory (a rehash, one cache miss per node).
+  void reserve(std::size_t n)
+  {
+    m_nodes.reserve(m_nodes.size() + n + n / 3);
+    m_unbalanced.reserve(m_unbalanced.size() + n);
+  }
+
   /// Splits leaves, children first, as long as `needs_split(const Cell_key&)` says so.
   /// Throws `Meshing_error` if it asks to split a cell at `max_depth()`.
   template <class SplitPredicate>
@@ -259,7 +273,16 @@ public:
   {
     // Only leaves made since the last balance can be too fine for a neighbour: the tree was
     // balanced before, and splitting never coarsens anything.
-    std::vector<std::vector<Cell_key>> by_level(m_max_depth + 1);
+    std::vector<Cell_list> by_level(m_max_depth + 1);
+    {
+      // each level's list in one allocation: a million leaves would copy themselves on
+      // every growth
+      std::vector<std::size_t> count(m_max_depth + 1, 0);
+      for(const Cell_key& k : m_unbalanced)
+        ++count[k.level];
+      for(int level = 0; level <= m_max_depth; ++level)
+        by_level[level].reserve(count[level]);
+    }
     for(const Cell_key& k : m_unbalanced)
       by_level[k.level].push_back(k);
     m_unbalanced.clear();
@@ -272,7 +295,7 @@ public:
     for(int level = m_depth; level >= 2; --level) {
       // by_level[level] does not grow while this level is processed; Morton order keeps the
       // lookups of neighbouring leaves close together in time (and so in cache).
-      std::vector<std::pair<std::uint64_t, Cell_key>> ordered;
+      Morton_coded_cells ordered;
       ordered.reserve(by_level[level].size());
       for(const Cell_key& k : by_level[level])
         ordered.emplace_back(morton_code(k), k);
@@ -319,7 +342,7 @@ public:
   }
 
   /// Sorts `coded`, cells each with its `morton_code()`, by the code.
-  void sort_by_morton_code(std::vector<std::pair<std::uint64_t, Cell_key>>& coded) const
+  void sort_by_morton_code(Morton_coded_cells& coded) const
   {
     // Down to level 27 every cell has its own code and there is one order, which a radix sort
     // finds fastest. Deeper cells tie: they keep the order std::sort gives them, as they did.
@@ -364,6 +387,8 @@ public:
   static constexpr int max_supported_depth = 40;
 
 private:
+  typedef std::vector<Cell_key, internal::Huge_page_allocator<Cell_key>> Cell_list;
+
   static constexpr std::uint32_t LEAF = 1;
   static constexpr std::uint32_t SPLIT = 0;
 
@@ -533,8 +558,8 @@ private:
   internal::Key_map m_nodes;
   std::size_t m_number_of_leaves = 0;
   int m_depth = 0;
-  std::vector<std::vector<Cell_key>>* m_new_leaves = nullptr; // during balance()
-  std::vector<Cell_key> m_unbalanced; // leaves made since the last balance()
+  std::vector<Cell_list>* m_new_leaves = nullptr; // during balance()
+  Cell_list m_unbalanced; // leaves made since the last balance()
   std::string m_depth_limit;          // set when precision lowered the maximum depth
   std::size_t m_max_leaves = (std::numeric_limits<std::size_t>::max)();
 };

@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <vector>
 
 namespace CGAL {
@@ -112,16 +113,12 @@ struct Mesh_quality_2
 
 namespace internal {
 
-/// One directed quad edge, stored in the bucket of its smaller endpoint.
-struct Quality_edge_entry
-{
-  std::size_t other; // the larger endpoint
-  std::size_t code;  // 2 * halfedge + (1 if the quad walks it from smaller to larger index)
-};
-
 /// The undirected edges of a quad soup, bucketed by their smaller endpoint (a CSR layout
 /// filled by counting sort, then each short bucket sorted by the larger endpoint).
-/// Halfedge `h` is edge (quads[h/4][h%4], quads[h/4][(h%4+1)%4]).
+/// Halfedge `h` is edge (quads[h/4][h%4], quads[h/4][(h%4+1)%4]). An entry is a code,
+/// 2 * halfedge + (1 if the quad walks it from smaller to larger index); its larger endpoint
+/// is read from the quads, not stored: a million quads' table is 32 MB less fresh memory,
+/// left uninitialised until filled.
 class Quality_edge_table
 {
 public:
@@ -141,7 +138,7 @@ public:
     }
     for(std::size_t i = 0; i < number_of_points; ++i)
       m_offsets[i + 1] += m_offsets[i];
-    m_entries.resize(m_offsets[number_of_points]);
+    m_codes.reset(new std::size_t[m_offsets[number_of_points]]);
     std::vector<std::size_t> fill(m_offsets.begin(), m_offsets.end() - 1);
     for(std::size_t q = 0; q < quads.size(); ++q) {
       if(skip_quad[q])
@@ -150,15 +147,17 @@ public:
         const std::size_t a = quads[q][k], b = quads[q][(k + 1) % 4];
         if(a == b)
           continue;
-        const std::size_t lo = (std::min)(a, b);
-        m_entries[fill[lo]++] = Quality_edge_entry{(std::max)(a, b), 2 * (4 * q + k) + (a < b ? 1 : 0)};
+        m_codes[fill[(std::min)(a, b)]++] = 2 * (4 * q + k) + (a < b ? 1 : 0);
       }
     }
+    auto larger = [&](std::size_t code) { return (std::max)(source(code / 2), target(code / 2)); };
     for(std::size_t i = 0; i < number_of_points; ++i) {
-      auto first = m_entries.begin() + m_offsets[i], last = m_entries.begin() + m_offsets[i + 1];
+      std::size_t* first = m_codes.get() + m_offsets[i];
+      std::size_t* last = m_codes.get() + m_offsets[i + 1];
       if(last - first > 1)
-        std::sort(first, last, [](const Quality_edge_entry& x, const Quality_edge_entry& y) {
-          return x.other < y.other || (x.other == y.other && x.code < y.code);
+        std::sort(first, last, [&](std::size_t x, std::size_t y) {
+          const std::size_t lx = larger(x), ly = larger(y);
+          return lx < ly || (lx == ly && x < y);
         });
     }
   }
@@ -166,7 +165,14 @@ public:
   std::size_t number_of_points() const { return m_offsets.size() - 1; }
   std::size_t bucket_begin(std::size_t v) const { return m_offsets[v]; }
   std::size_t bucket_end(std::size_t v) const { return m_offsets[v + 1]; }
-  const Quality_edge_entry& entry(std::size_t i) const { return m_entries[i]; }
+  /// the code of entry `i`
+  std::size_t code(std::size_t i) const { return m_codes[i]; }
+  /// the larger endpoint of entry `i`
+  std::size_t other(std::size_t i) const
+  {
+    const std::size_t h = m_codes[i] / 2;
+    return (std::max)(source(h), target(h));
+  }
 
   std::size_t source(std::size_t h) const { return m_quads[h / 4][h % 4]; }
   std::size_t target(std::size_t h) const { return m_quads[h / 4][(h % 4 + 1) % 4]; }
@@ -174,7 +180,7 @@ public:
 private:
   const std::vector<std::array<std::size_t, 4>>& m_quads;
   std::vector<std::size_t> m_offsets;
-  std::vector<Quality_edge_entry> m_entries;
+  std::unique_ptr<std::size_t[]> m_codes;
 };
 
 /// Counts the pairs of used vertices within `tol` of each other in x and in y. The points are
@@ -196,6 +202,7 @@ inline std::size_t count_near_duplicate_pairs(const std::vector<Point_2d>& pts, 
     }
   };
   std::vector<Entry> sorted;
+  sorted.reserve(pts.size()); // all are used in a mesher's output: no copies on growth
   for(std::size_t v = 0; v < pts.size(); ++v)
     if(used[v])
       sorted.push_back(Entry{ tol > 0 ? std::int64_t(std::floor((pts[v].x - lo.x) / tol)) : 0, pts[v].x, pts[v].y });
@@ -480,21 +487,20 @@ Mesh_quality_2 compute_quality(const Quad_mesh_2<Point_2>& mesh)
   // Edge usage: non-manifold edges and boundary (used-once) halfedges.
   const internal::Quality_edge_table table(mesh.quads, skip, np);
   std::vector<std::size_t> boundary;
-  std::vector<char> is_boundary(4 * nq, 0);
   for(std::size_t v = 0; v < np; ++v) {
     std::size_t i = table.bucket_begin(v);
     const std::size_t end = table.bucket_end(v);
     while(i < end) {
       std::size_t j = i, forward = 0;
-      while(j < end && table.entry(j).other == table.entry(i).other) {
-        forward += table.entry(j).code & 1;
+      const std::size_t other = table.other(i);
+      while(j < end && table.other(j) == other) {
+        forward += table.code(j) & 1;
         ++j;
       }
       const std::size_t uses = j - i;
       if(uses == 1) {
-        const std::size_t h = table.entry(i).code / 2;
+        const std::size_t h = table.code(i) / 2;
         boundary.push_back(h);
-        is_boundary[h] = 1;
       } else if(uses > 2 || forward != 1) {
         ++r.number_of_non_manifold_edges;
       }

@@ -209,12 +209,14 @@ public:
       }
     m_removed = { result.removed_outside, result.removed_intersecting, result.removed_near,
                   result.removed_single };
-    std::vector<std::size_t> new_index(mesh.points.size(), std::size_t(-1));
-    for(std::size_t q = 0; q < result.core.quads.size(); ++q)
-      for(int c = 0; c < 4; ++c)
-        new_index[mesh.quads[result.core_to_input_quad[q]][c]] = result.core.quads[q][c];
-    for(std::size_t& v : m_point_vertices)
-      v = new_index[v];
+    if(!m_point_vertices.empty()) { // most domains have no isolated point to renumber
+      std::vector<std::size_t> new_index(mesh.points.size(), std::size_t(-1));
+      for(std::size_t q = 0; q < result.core.quads.size(); ++q)
+        for(int c = 0; c < 4; ++c)
+          new_index[mesh.quads[result.core_to_input_quad[q]][c]] = result.core.quads[q][c];
+      for(std::size_t& v : m_point_vertices)
+        v = new_index[v];
+    }
     mesh = std::move(result.core);
     // An isolated point too near the boundary for its cells loses its quads here, or ends on
     // the core's boundary, which the buffer stages move: run() refines there (lost_points()).
@@ -613,6 +615,18 @@ private:
     // it), which saves the quarter of the cells that a disc's box holds outside the disc.
     // A cell that no segment meets lies on one side, which its parent's tells, or its centre.
     enum Side : unsigned char { UNKNOWN, INSIDE, OUTSIDE };
+    // Room for the cells of that size the domain's area holds: fewer than it gets (the
+    // boundary's cells come on top), so never a larger node map than growing would make.
+    auto x_of = m_traits.compute_x_2_object();
+    auto y_of = m_traits.compute_y_2_object();
+    double area = 0; // the loops' signed areas: holes run clockwise
+    for(const auto& loop : m_loops.loops)
+      for(std::size_t k = 0, n = loop.vertices.size(); k < n; ++k) {
+        const Point_2& a = m_domain.points[loop.vertices[k]];
+        const Point_2& b = m_domain.points[loop.vertices[(k + 1) % n]];
+        area += CGAL::to_double(x_of(a)) * CGAL::to_double(y_of(b)) - CGAL::to_double(x_of(b)) * CGAL::to_double(y_of(a));
+      }
+    m_tree->reserve(std::size_t(area / 2 / (side * side)));
     const internal::Domain_segments<GeomTraits> boundary(m_domain, m_loops, m_traits);
     auto meets_boundary = [&](const Cell_key& k) { // by boxes: it may say yes too often
       bool any = false;

@@ -6,6 +6,7 @@
 #define CGAL_QUAD_MESHER_2_INTERNAL_KEY_MAP_H
 
 #include <CGAL/Quad_mesher_2/Cell_key.h>
+#include <CGAL/Quad_mesher_2/internal/Huge_page_allocator.h>
 
 #include <CGAL/assertions.h>
 
@@ -129,10 +130,12 @@ private:
     std::uint32_t value;
   };
   static_assert(sizeof(Slot) == 16, "a slot takes 16 bytes");
+  // probed at random: with 4 kB pages nearly every probe of a large map also misses the TLB
+  typedef std::vector<Slot, Huge_page_allocator<Slot>> Slots;
 
   void rehash(std::size_t capacity)
   {
-    std::vector<Slot> slots(capacity, Slot{ 0, empty_hi, 0 });
+    Slots slots(capacity, Slot{ 0, empty_hi, 0 });
     std::size_t mask = capacity - 1;
     for(const Slot& old : m_slots) {
       if(old.hi == empty_hi)
@@ -146,7 +149,7 @@ private:
     m_mask = mask;
   }
 
-  std::vector<Slot> m_slots;
+  Slots m_slots;
   std::size_t m_size = 0;
   std::size_t m_mask = 0;
 };

@@ -90,7 +90,7 @@ inline const Quad_template& template_of(const Template_choice& t)
 template <class Tree>
 std::vector<Cell_key> leaves_in_morton_order(const Tree& tree)
 {
-  std::vector<std::pair<std::uint64_t, Cell_key>> coded;
+  typename Tree::Morton_coded_cells coded;
   coded.reserve(tree.number_of_leaves());
   tree.for_each_leaf([&](const Cell_key& k) { coded.emplace_back(tree.morton_code(k), k); });
   tree.sort_by_morton_code(coded);

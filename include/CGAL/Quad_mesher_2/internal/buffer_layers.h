@@ -68,6 +68,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <unordered_map>
@@ -80,28 +81,29 @@ namespace internal {
 
 /// The quads at each vertex of a quad mesh, in increasing order: compressed rows (two arrays
 /// for the whole mesh, not a vector per vertex, which cost more than the buffer's own work on
-/// large cores).
+/// large cores), of 32-bit indices, which halve the arrays' memory and its page faults.
 class Vertex_quads
 {
 public:
   struct Range
   {
-    const std::size_t* first;
-    const std::size_t* last;
-    const std::size_t* begin() const { return first; }
-    const std::size_t* end() const { return last; }
+    const std::uint32_t* first;
+    const std::uint32_t* last;
+    const std::uint32_t* begin() const { return first; }
+    const std::uint32_t* end() const { return last; }
     std::size_t size() const { return std::size_t(last - first); }
   };
 
   Vertex_quads(const std::vector<std::array<std::size_t, 4>>& quads, std::size_t n_points)
     : m_offsets(n_points + 1, 0), m_quads(4 * quads.size())
   {
+    CGAL_precondition(4 * quads.size() <= (std::numeric_limits<std::uint32_t>::max)());
     for(const auto& q : quads)
       for(std::size_t v : q) ++m_offsets[v + 1];
     for(std::size_t v = 0; v < n_points; ++v) m_offsets[v + 1] += m_offsets[v];
-    std::vector<std::size_t> fill(m_offsets.begin(), m_offsets.end() - 1);
+    std::vector<std::uint32_t> fill(m_offsets.begin(), m_offsets.end() - 1);
     for(std::size_t q = 0; q < quads.size(); ++q)
-      for(std::size_t v : quads[q]) m_quads[fill[v]++] = q;
+      for(std::size_t v : quads[q]) m_quads[fill[v]++] = std::uint32_t(q);
   }
 
   Range operator[](std::size_t v) const
@@ -110,8 +112,8 @@ public:
   }
 
 private:
-  std::vector<std::size_t> m_offsets;
-  std::vector<std::size_t> m_quads;
+  std::vector<std::uint32_t> m_offsets;
+  std::vector<std::uint32_t> m_quads;
 };
 
 /// the oriented boundary loops of a quad mesh whose boundary vertices all have two boundary
@@ -400,6 +402,7 @@ public:
   {
     m_locator = make_loop_locator(domain, loops);
     m_chord_tolerance = 1e-3 * m_locator->diagonal();
+    m_xy.reserve(mesh.points.capacity()); // the room the clearance left for the layers' points
     m_xy.resize(mesh.points.size());
     for(std::size_t v = 0; v < mesh.points.size(); ++v)
       m_xy[v] = to_point_2d(mesh.points[v]);
@@ -414,6 +417,15 @@ public:
   {
     m_quads_at = std::make_unique<Vertex_quads>(m_mesh.quads, m_mesh.points.size());
     m_cycles = mesh_boundary_cycles(m_mesh.quads, *m_quads_at, m_mesh.points.size());
+    // The layers add a few quads and points per core boundary vertex (about two each on a
+    // disc): room for four each now (the clearance's core has it already), or the first one
+    // added copies the whole core's arrays into fresh memory.
+    std::size_t boundary_vertices = 0;
+    for(const auto& cyc : m_cycles)
+      boundary_vertices += cyc.size();
+    m_mesh.quads.reserve(m_mesh.quads.size() + 4 * boundary_vertices);
+    m_mesh.points.reserve(m_mesh.points.size() + 4 * boundary_vertices);
+    m_xy.reserve(m_xy.size() + 4 * boundary_vertices);
     m_cycle_loop.assign(m_cycles.size(), none);
     m_on_cycle.assign(m_mesh.points.size(), 0);
     std::vector<std::size_t> owner(m_loops.loops.size(), none);

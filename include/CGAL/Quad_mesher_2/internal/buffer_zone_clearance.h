@@ -517,14 +517,22 @@ private:
         break;
       }
     }
-    r.core.points.reserve(std::count(new_index.begin(), new_index.end(), std::size_t(0)));
+    // The buffer layers add a few quads and points per core boundary edge (see
+    // Buffer_layers::match_loops()): room for them now, or the first one added copies the
+    // whole core into fresh memory.
+    std::size_t boundary_edges = 0;
+    for(std::size_t q = 0; q < nq; ++q)
+      if(m_state[q] == KEPT)
+        for(int e = 0; e < 4; ++e) boundary_edges += kept(m_nb[4 * q + e]) ? 0 : 1;
+    const std::size_t room = 4 * boundary_edges;
+    r.core.points.reserve(std::count(new_index.begin(), new_index.end(), std::size_t(0)) + room);
     for(std::size_t v = 0; v < nv; ++v)
       if(new_index[v] != none) {
         new_index[v] = r.core.points.size();
         r.core.points.push_back(m_mesh.points[v]);
       }
     const std::size_t kept_quads = nq - r.removed_outside - r.removed_intersecting - r.removed_near - r.removed_single;
-    r.core.quads.reserve(kept_quads);
+    r.core.quads.reserve(kept_quads + room);
     r.core_to_input_quad.reserve(kept_quads);
     for(std::size_t q = 0; q < nq; ++q)
       if(m_state[q] == KEPT) {

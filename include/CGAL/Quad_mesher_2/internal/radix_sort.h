@@ -19,8 +19,8 @@ namespace internal {
 // only over the bits some key sets (the Morton codes of a quadtree's cells share their low
 // zero bits), so a few passes, each linear. For the millions of cells a mesh visits in
 // Morton order, about three times faster than std::sort.
-template <class T>
-void radix_sort_by_key(std::vector<std::pair<std::uint64_t, T>>& v)
+template <class T, class Allocator>
+void radix_sort_by_key(std::vector<std::pair<std::uint64_t, T>, Allocator>& v)
 {
   constexpr int digit_bits = 11;
   constexpr std::uint64_t digits = std::uint64_t(1) << digit_bits;
@@ -30,7 +30,7 @@ void radix_sort_by_key(std::vector<std::pair<std::uint64_t, T>>& v)
     return;
   int low = 0;
   while(((all >> low) & 1) == 0) ++low;
-  std::vector<std::pair<std::uint64_t, T>> out(v.size());
+  std::vector<std::pair<std::uint64_t, T>, Allocator> out(v.size());
   for(int shift = low; shift < 64 && (all >> shift) != 0; shift += digit_bits) {
     std::array<std::size_t, digits> start{};
     for(const auto& e : v) ++start[(e.first >> shift) & (digits - 1)];
