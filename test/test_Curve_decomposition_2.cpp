@@ -14,6 +14,7 @@
 #include <CGAL/Quad_mesher_2/Domain_2.h>
 #include <CGAL/Quad_mesher_2/Domain_loops_2.h>
 #include <CGAL/Quad_mesher_2/Meshing_error.h>
+#include <CGAL/Quad_mesher_2/Quadtree_mesher_2.h>
 
 #include <gtest/gtest.h>
 
@@ -358,6 +359,32 @@ TEST(CurveDecomposition, EllipseIsDenseAtTheEnds)
     if(std::abs(a[0]) > 9.5 && std::abs(b[0]) > 9.5) longest_end = std::max(longest_end, l);
   }
   EXPECT_GT(shortest_mid, 4 * longest_end);
+}
+
+// Sizing follows the boundary's curvature as the paper's does (§4.1, §4.2): the decomposition
+// puts the spline's points closer where it bends, and the quadtree sizes cells by the points'
+// spacing. An ellipse 20 by 2 bends 100 times more at its ends than at its sides: the cells at
+// its boundary points are several times smaller at the ends.
+TEST(CurveDecomposition, QuadtreeCellsAreSmallerWhereTheCurveBends)
+{
+  Domain d;
+  add_loop(d, ellipse(24, 10, 1));
+  const Domain r = CGAL::Quad_mesher_2::decompose_domain_curves<K>(d, Options());
+  CGAL::Quad_mesher_2::Quadtree_mesher_2<K> mesher(r);
+  mesher.build_quadtree();
+  const auto& tree = mesher.quadtree();
+  double ends = 0, middle = 0;
+  std::size_t n_ends = 0, n_middle = 0;
+  for(const Point_2& p : r.points) {
+    const double side = tree.cell_side(tree.locate(p).level), x = std::abs(to_v(p)[0]);
+    if(x > 9.5) { ends += side; ++n_ends; }
+    if(x < 5) { middle += side; ++n_middle; }
+  }
+  ASSERT_GT(n_ends, 0u);
+  ASSERT_GT(n_middle, 0u);
+  EXPECT_GT(middle / double(n_middle), 4 * ends / double(n_ends))
+      << "mean cell side at the boundary points: " << middle / double(n_middle) << " on the sides, "
+      << ends / double(n_ends) << " at the ends";
 }
 
 TEST(CurveDecomposition, RoundedSquareIsSparseOnTheSides)
