@@ -64,6 +64,7 @@
 #include <CGAL/Quad_mesher_2/Domain_2.h>
 #include <CGAL/Quad_mesher_2/Domain_loops_2.h>
 #include <CGAL/Quad_mesher_2/Quad_mesh_2.h>
+#include <CGAL/Quad_mesher_2/internal/Huge_page_allocator.h>
 
 #include <CGAL/Bbox_2.h>
 #include <CGAL/assertions.h>
@@ -93,7 +94,7 @@ struct Clearance_result
   /// `core_to_input_quad[i]`: the index in the input mesh of core quad `i`.
   std::vector<std::size_t> core_to_input_quad;
   /// `core_vertex[v]`: the index in the core of input vertex `v`, `std::size_t(-1)` if removed.
-  std::vector<std::size_t> core_vertex;
+  std::vector<std::size_t, Huge_page_allocator<std::size_t>> core_vertex;
   /// Quads removed by criterion 1 (outside the domain, meeting no segment), criterion 2
   /// (meeting a segment), criterion 3 (sharing a vertex within eps_s of the boundary) and the
   /// single-element / manifold clean-up. They add up, with the kept quads, to the input count.
@@ -194,6 +195,10 @@ class Buffer_zone_clearance
   static constexpr std::size_t removed_vertex = std::size_t(-1);
   // Consecutive quads (or vertices) that share one box-tree query (see "Cost" above).
   static constexpr std::size_t block = 64;
+  // The arrays of an entry per input quad, corner or vertex (millions), written once: 2 MB
+  // pages, as the quadtree's.
+  template <class T>
+  using Array = std::vector<T, Huge_page_allocator<T>>;
 
   enum State : unsigned char { KEPT, OUTSIDE, INTERSECTING, NEAR, SINGLE };
 
@@ -325,7 +330,7 @@ private:
     // (the vertex is on no segment). So, in quad order, a quad takes the side of an earlier
     // one at one of its vertices (`owner`), and only a quad without one needs a location.
     const std::size_t nq = m_mesh.quads.size();
-    std::vector<Index> owner(m_mesh.points.size(), none);
+    Array<Index> owner(m_mesh.points.size(), none);
     for(std::size_t q = 0; q < nq; ++q) {
       if(m_state[q] != KEPT) continue;
       const auto& quad = m_mesh.quads[q];
@@ -344,15 +349,15 @@ private:
     const auto bbox = m_traits.construct_bbox_2_object();
     const auto cmp_dist = m_traits.compare_squared_distance_2_object();
     // eps_s(v) = 0.5 * max size of ALL quads at v; tested only if v is `used` by a kept quad
-    std::vector<double> eps(nv, 0);
-    std::vector<unsigned char> used(nv, 0);
+    Array<double> eps(nv, 0);
+    Array<unsigned char> used(nv, 0);
     for(std::size_t q = 0; q < nq; ++q)
       for(int c = 0; c < 4; ++c) {
         const std::size_t v = m_mesh.quads[q][c];
         eps[v] = (std::max)(eps[v], 0.5 * m_size[q]);
         used[v] |= (m_state[q] == KEPT);
       }
-    std::vector<unsigned char> near(nv, 0);
+    Array<unsigned char> near(nv, 0);
     std::array<Bbox_2, block> boxes;
     for(std::size_t v0 = 0; v0 < nv; v0 += block) {
       const std::size_t n = (std::min)(block, nv - v0);
@@ -437,8 +442,8 @@ private:
   void remove_singles()
   {
     const std::size_t nq = m_mesh.quads.size(), nv = m_mesh.points.size();
-    std::vector<Index> quad_work, vertex_work;
-    std::vector<unsigned char> in_qwork(nq, 0), in_vwork(nv, 0);
+    Array<Index> quad_work, vertex_work;
+    Array<unsigned char> in_qwork(nq, 0), in_vwork(nv, 0);
     // Peeling quads with at most one kept neighbour reaches the same fixed point in any order,
     // and queues no vertex (all are queued here): only the quads removable now start the queue.
     for(std::size_t q = 0; q < nq; ++q)
@@ -510,7 +515,7 @@ private:
   {
     Clearance_result<K> r;
     const std::size_t nq = m_mesh.quads.size(), nv = m_mesh.points.size();
-    std::vector<std::size_t>& new_index = r.core_vertex;
+    auto& new_index = r.core_vertex;
     new_index.assign(nv, removed_vertex);
     for(std::size_t q = 0; q < nq; ++q) {
       switch(m_state[q]) {
@@ -559,12 +564,12 @@ private:
   const Domain_2<K>& m_domain;
   const Domain_loops_2<K>& m_loops;
   const K& m_traits;
-  std::vector<State> m_state;
+  Array<State> m_state;
   Domain_segments<K> m_boundary;
   std::vector<std::size_t> m_candidates;
-  std::vector<Index> m_nb;
-  std::vector<Index> m_vq_begin, m_vq;
-  std::vector<Index> m_quads_at; // the number of input quads at each vertex
+  Array<Index> m_nb;
+  Array<Index> m_vq_begin, m_vq;
+  Array<Index> m_quads_at; // the number of input quads at each vertex
   // fans_at()'s buffers; m_local holds corners 4q+c
   std::vector<Index> m_local, m_fan_quads;
   std::vector<std::size_t> m_fan_begin, m_stack;
