@@ -7,6 +7,7 @@
 
 #include <CGAL/Quad_mesher_2/Cell_key.h>
 #include <CGAL/Quad_mesher_2/Quad_mesh_2.h>
+#include <CGAL/Quad_mesher_2/internal/Huge_page_allocator.h>
 #include <CGAL/Quad_mesher_2/internal/Key_map.h>
 #include <CGAL/Quad_mesher_2/internal/template_table.h>
 
@@ -128,7 +129,8 @@ templated_mesh(const Tree& tree, std::vector<Cell_key>* quad_cells = nullptr,
   const std::vector<Cell_key> leaves = leaves_in_morton_order(tree);
   // Four sibling leaves come one after another in Morton order: half of their template
   // lookups (those at their parent's centre) are known without looking (most leaves are so).
-  std::vector<const Quad_template*> templates(leaves.size());
+  // 2 MB pages: an entry per leaf, millions.
+  std::vector<const Quad_template*, Huge_page_allocator<const Quad_template*>> templates(leaves.size());
   for(std::size_t n = 0; n < leaves.size();) {
     const Cell_key& k = leaves[n];
     const bool family = k.level > 0 && (k.i & 1) == 0 && (k.j & 1) == 0 && n + 3 < leaves.size()
