@@ -120,10 +120,10 @@ templated_mesh(const Tree& tree, std::vector<Cell_key>* quad_cells = nullptr,
   // load under a half and is half the memory to clear and miss in; more vertices rehash it
   Key_map vertex_index(tree.number_of_leaves());
   std::uint32_t number_of_vertices = 0;
-  mesh.quads.reserve(expected);
+  reserve_on_huge_pages(mesh.quads, expected);
   if(quad_cells != nullptr) {
     quad_cells->clear();
-    quad_cells->reserve(expected);
+    reserve_on_huge_pages(*quad_cells, expected);
   }
 
   const std::vector<Cell_key> leaves = leaves_in_morton_order(tree);
@@ -173,10 +173,12 @@ templated_mesh(const Tree& tree, std::vector<Cell_key>* quad_cells = nullptr,
 
   // The keys in vertex order, taken from the map, which goes before the points come: the
   // map and the points are never held together (peak memory).
-  std::vector<Key_code> vertex_keys(number_of_vertices);
+  std::vector<Key_code> vertex_keys;
+  reserve_on_huge_pages(vertex_keys, number_of_vertices);
+  vertex_keys.resize(number_of_vertices);
   vertex_index.for_each([&](Key_code key, std::uint32_t v) { vertex_keys[v] = key; });
   vertex_index = Key_map();
-  mesh.points.reserve(vertex_keys.size());
+  reserve_on_huge_pages(mesh.points, vertex_keys.size());
   for(Key_code key : vertex_keys)
     mesh.points.push_back(tree.lattice_point(vertex_level, lattice_key_x(key), lattice_key_y(key)));
   if(vertex_keys_out != nullptr)
