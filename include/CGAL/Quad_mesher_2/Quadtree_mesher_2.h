@@ -200,7 +200,7 @@ public:
     std::vector<double> quad_size(m_quad_cells.size());
     for(std::size_t q = 0; q < quad_size.size(); ++q)
       quad_size[q] = m_tree->cell_side(m_quad_cells[q].level);
-    auto result = internal::clear_buffer_zone(mesh, quad_size, m_domain, m_loops, m_traits);
+    auto result = internal::clear_buffer_zone(std::move(mesh), quad_size, m_domain, m_loops, m_traits);
     m_core_vertex_size.assign(result.core.points.size(), 0.0);
     for(std::size_t q = 0; q < result.core.quads.size(); ++q)
       for(int c = 0; c < 4; ++c) {
@@ -209,14 +209,8 @@ public:
       }
     m_removed = { result.removed_outside, result.removed_intersecting, result.removed_near,
                   result.removed_single };
-    if(!m_point_vertices.empty()) { // most domains have no isolated point to renumber
-      std::vector<std::size_t> new_index(mesh.points.size(), std::size_t(-1));
-      for(std::size_t q = 0; q < result.core.quads.size(); ++q)
-        for(int c = 0; c < 4; ++c)
-          new_index[mesh.quads[result.core_to_input_quad[q]][c]] = result.core.quads[q][c];
-      for(std::size_t& v : m_point_vertices)
-        v = new_index[v];
-    }
+    for(std::size_t& v : m_point_vertices)
+      v = result.core_vertex[v];
     mesh = std::move(result.core);
     // An isolated point too near the boundary for its cells loses its quads here, or ends on
     // the core's boundary, which the buffer stages move: run() refines there (lost_points()).

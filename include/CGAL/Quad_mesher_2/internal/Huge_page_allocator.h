@@ -6,6 +6,7 @@
 #define CGAL_QUAD_MESHER_2_INTERNAL_HUGE_PAGE_ALLOCATOR_H
 
 #include <cstddef>
+#include <cstdint>
 #include <cstdlib>
 #include <memory>
 #include <new>
@@ -64,6 +65,23 @@ private:
   static constexpr std::size_t huge_page = std::size_t(1) << 21;
   static bool is_large(std::size_t n) { return n * sizeof(T) >= 2 * huge_page; }
 };
+
+// Reserves room for `n` elements in `v`, a vector whose allocator is fixed (a mesh's), and
+// asks for 2 MB pages on the whole ones within it, as Huge_page_allocator does: for arrays of
+// millions filled after the reserve.
+template <class Vector>
+void reserve_on_huge_pages(Vector& v, std::size_t n)
+{
+  v.reserve(n);
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  constexpr std::uintptr_t huge_page = std::uintptr_t(1) << 21;
+  const std::uintptr_t begin = reinterpret_cast<std::uintptr_t>(v.data());
+  const std::uintptr_t first = (begin + huge_page - 1) & ~(huge_page - 1);
+  const std::uintptr_t last = (begin + n * sizeof(typename Vector::value_type)) & ~(huge_page - 1);
+  if(last > first + huge_page) // as Huge_page_allocator: 4 MB and more
+    ::madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
+#endif
+}
 
 } // namespace internal
 } // namespace Quad_mesher_2

@@ -7,6 +7,7 @@
 
 #include <CGAL/Quad_mesher_2/Cell_key.h>
 #include <CGAL/Quad_mesher_2/Quad_mesh_2.h>
+#include <CGAL/Quad_mesher_2/internal/Huge_page_allocator.h>
 #include <CGAL/Quad_mesher_2/internal/Key_map.h>
 #include <CGAL/Quad_mesher_2/internal/template_table.h>
 
@@ -119,16 +120,17 @@ templated_mesh(const Tree& tree, std::vector<Cell_key>* quad_cells = nullptr,
   // load under a half and is half the memory to clear and miss in; more vertices rehash it
   Key_map vertex_index(tree.number_of_leaves());
   std::uint32_t number_of_vertices = 0;
-  mesh.quads.reserve(expected);
+  reserve_on_huge_pages(mesh.quads, expected);
   if(quad_cells != nullptr) {
     quad_cells->clear();
-    quad_cells->reserve(expected);
+    reserve_on_huge_pages(*quad_cells, expected);
   }
 
   const std::vector<Cell_key> leaves = leaves_in_morton_order(tree);
   // Four sibling leaves come one after another in Morton order: half of their template
   // lookups (those at their parent's centre) are known without looking (most leaves are so).
-  std::vector<const Quad_template*> templates(leaves.size());
+  // 2 MB pages: an entry per leaf, millions.
+  std::vector<const Quad_template*, Huge_page_allocator<const Quad_template*>> templates(leaves.size());
   for(std::size_t n = 0; n < leaves.size();) {
     const Cell_key& k = leaves[n];
     const bool family = k.level > 0 && (k.i & 1) == 0 && (k.j & 1) == 0 && n + 3 < leaves.size()
@@ -171,10 +173,12 @@ templated_mesh(const Tree& tree, std::vector<Cell_key>* quad_cells = nullptr,
 
   // The keys in vertex order, taken from the map, which goes before the points come: the
   // map and the points are never held together (peak memory).
-  std::vector<Key_code> vertex_keys(number_of_vertices);
+  std::vector<Key_code> vertex_keys;
+  reserve_on_huge_pages(vertex_keys, number_of_vertices);
+  vertex_keys.resize(number_of_vertices);
   vertex_index.for_each([&](Key_code key, std::uint32_t v) { vertex_keys[v] = key; });
   vertex_index = Key_map();
-  mesh.points.reserve(vertex_keys.size());
+  reserve_on_huge_pages(mesh.points, vertex_keys.size());
   for(Key_code key : vertex_keys)
     mesh.points.push_back(tree.lattice_point(vertex_level, lattice_key_x(key), lattice_key_y(key)));
   if(vertex_keys_out != nullptr)

@@ -59,6 +59,7 @@
 #include <CGAL/Quad_mesher_2/Domain_2.h>
 #include <CGAL/Quad_mesher_2/Domain_loops_2.h>
 #include <CGAL/Quad_mesher_2/Quad_mesh_2.h>
+#include <CGAL/Quad_mesher_2/internal/Huge_page_allocator.h>
 #include <CGAL/Quad_mesher_2/internal/quad_geometry.h>
 
 #include <CGAL/Bbox_2.h>
@@ -101,7 +102,7 @@ public:
     for(const auto& q : quads)
       for(std::size_t v : q) ++m_offsets[v + 1];
     for(std::size_t v = 0; v < n_points; ++v) m_offsets[v + 1] += m_offsets[v];
-    std::vector<std::uint32_t> fill(m_offsets.begin(), m_offsets.end() - 1);
+    Array fill(m_offsets.begin(), m_offsets.end() - 1);
     for(std::size_t q = 0; q < quads.size(); ++q)
       for(std::size_t v : quads[q]) m_quads[fill[v]++] = std::uint32_t(q);
   }
@@ -112,8 +113,10 @@ public:
   }
 
 private:
-  std::vector<std::uint32_t> m_offsets;
-  std::vector<std::uint32_t> m_quads;
+  // an entry per vertex or corner of a million-quad mesh, built twice a run: 2 MB pages
+  typedef std::vector<std::uint32_t, Huge_page_allocator<std::uint32_t>> Array;
+  Array m_offsets;
+  Array m_quads;
 };
 
 /// the oriented boundary loops of a quad mesh whose boundary vertices all have two boundary

@@ -64,6 +64,7 @@
 #include <CGAL/Quad_mesher_2/Domain_2.h>
 #include <CGAL/Quad_mesher_2/Domain_loops_2.h>
 #include <CGAL/Quad_mesher_2/Quad_mesh_2.h>
+#include <CGAL/Quad_mesher_2/internal/Huge_page_allocator.h>
 
 #include <CGAL/Bbox_2.h>
 #include <CGAL/assertions.h>
@@ -92,6 +93,8 @@ struct Clearance_result
   Quad_mesh_2<typename K::Point_2> core;
   /// `core_to_input_quad[i]`: the index in the input mesh of core quad `i`.
   std::vector<std::size_t> core_to_input_quad;
+  /// `core_vertex[v]`: the index in the core of input vertex `v`, `std::size_t(-1)` if removed.
+  std::vector<std::size_t, Huge_page_allocator<std::size_t>> core_vertex;
   /// Quads removed by criterion 1 (outside the domain, meeting no segment), criterion 2
   /// (meeting a segment), criterion 3 (sharing a vertex within eps_s of the boundary) and the
   /// single-element / manifold clean-up. They add up, with the kept quads, to the input count.
@@ -189,19 +192,24 @@ class Buffer_zone_clearance
   // adjacency arrays.
   typedef std::uint32_t Index;
   static constexpr Index none = (std::numeric_limits<Index>::max)();
+  static constexpr std::size_t removed_vertex = std::size_t(-1);
   // Consecutive quads (or vertices) that share one box-tree query (see "Cost" above).
   static constexpr std::size_t block = 64;
+  // The arrays of an entry per input quad, corner or vertex (millions), written once: 2 MB
+  // pages, as the quadtree's.
+  template <class T>
+  using Array = std::vector<T, Huge_page_allocator<T>>;
 
   enum State : unsigned char { KEPT, OUTSIDE, INTERSECTING, NEAR, SINGLE };
 
 public:
-  Buffer_zone_clearance(const Mesh& mesh, const std::vector<double>& quad_size, const Domain_2<K>& domain,
+  Buffer_zone_clearance(Mesh mesh, const std::vector<double>& quad_size, const Domain_2<K>& domain,
                         const Domain_loops_2<K>& loops, const K& traits)
-    : m_mesh(mesh), m_size(quad_size), m_domain(domain), m_loops(loops), m_traits(traits),
+    : m_mesh(std::move(mesh)), m_size(quad_size), m_domain(domain), m_loops(loops), m_traits(traits),
       m_boundary(domain, loops, traits)
   {
-    CGAL_precondition(quad_size.size() == mesh.quads.size());
-    CGAL_precondition(mesh.quads.size() < none / 4 && mesh.points.size() < none);
+    CGAL_precondition(quad_size.size() == m_mesh.quads.size());
+    CGAL_precondition(m_mesh.quads.size() < none / 4 && m_mesh.points.size() < none);
   }
 
   Clearance_result<K> run()
@@ -322,7 +330,7 @@ private:
     // (the vertex is on no segment). So, in quad order, a quad takes the side of an earlier
     // one at one of its vertices (`owner`), and only a quad without one needs a location.
     const std::size_t nq = m_mesh.quads.size();
-    std::vector<Index> owner(m_mesh.points.size(), none);
+    Array<Index> owner(m_mesh.points.size(), none);
     for(std::size_t q = 0; q < nq; ++q) {
       if(m_state[q] != KEPT) continue;
       const auto& quad = m_mesh.quads[q];
@@ -341,15 +349,15 @@ private:
     const auto bbox = m_traits.construct_bbox_2_object();
     const auto cmp_dist = m_traits.compare_squared_distance_2_object();
     // eps_s(v) = 0.5 * max size of ALL quads at v; tested only if v is `used` by a kept quad
-    std::vector<double> eps(nv, 0);
-    std::vector<unsigned char> used(nv, 0);
+    Array<double> eps(nv, 0);
+    Array<unsigned char> used(nv, 0);
     for(std::size_t q = 0; q < nq; ++q)
       for(int c = 0; c < 4; ++c) {
         const std::size_t v = m_mesh.quads[q][c];
         eps[v] = (std::max)(eps[v], 0.5 * m_size[q]);
         used[v] |= (m_state[q] == KEPT);
       }
-    std::vector<unsigned char> near(nv, 0);
+    Array<unsigned char> near(nv, 0);
     std::array<Bbox_2, block> boxes;
     for(std::size_t v0 = 0; v0 < nv; v0 += block) {
       const std::size_t n = (std::min)(block, nv - v0);
@@ -434,8 +442,8 @@ private:
   void remove_singles()
   {
     const std::size_t nq = m_mesh.quads.size(), nv = m_mesh.points.size();
-    std::vector<Index> quad_work, vertex_work;
-    std::vector<unsigned char> in_qwork(nq, 0), in_vwork(nv, 0);
+    Array<Index> quad_work, vertex_work;
+    Array<unsigned char> in_qwork(nq, 0), in_vwork(nv, 0);
     // Peeling quads with at most one kept neighbour reaches the same fixed point in any order,
     // and queues no vertex (all are queued here): only the quads removable now start the queue.
     for(std::size_t q = 0; q < nq; ++q)
@@ -501,11 +509,14 @@ private:
   }
 
   // ---- output ------------------------------------------------------------------------------
-  Clearance_result<K> output() const
+  // The core is the input mesh compacted in place: its memory is already paged in, where a
+  // fresh copy cost a page fault per 4 kB written.
+  Clearance_result<K> output()
   {
     Clearance_result<K> r;
     const std::size_t nq = m_mesh.quads.size(), nv = m_mesh.points.size();
-    std::vector<std::size_t> new_index(nv, std::size_t(none));
+    auto& new_index = r.core_vertex;
+    new_index.assign(nv, removed_vertex);
     for(std::size_t q = 0; q < nq; ++q) {
       switch(m_state[q]) {
       case OUTSIDE: ++r.removed_outside; break;
@@ -525,36 +536,40 @@ private:
       if(m_state[q] == KEPT)
         for(int e = 0; e < 4; ++e) boundary_edges += kept(m_nb[4 * q + e]) ? 0 : 1;
     const std::size_t room = 4 * boundary_edges;
-    r.core.points.reserve(std::count(new_index.begin(), new_index.end(), std::size_t(0)) + room);
+    // A kept vertex or quad moves to an index no larger than its own: forward copies are safe.
+    std::size_t kept_points = 0;
     for(std::size_t v = 0; v < nv; ++v)
-      if(new_index[v] != none) {
-        new_index[v] = r.core.points.size();
-        r.core.points.push_back(m_mesh.points[v]);
+      if(new_index[v] != removed_vertex) {
+        new_index[v] = kept_points;
+        m_mesh.points[kept_points++] = m_mesh.points[v];
       }
+    m_mesh.points.resize(kept_points);
     const std::size_t kept_quads = nq - r.removed_outside - r.removed_intersecting - r.removed_near - r.removed_single;
-    r.core.quads.reserve(kept_quads + room);
     r.core_to_input_quad.reserve(kept_quads);
     for(std::size_t q = 0; q < nq; ++q)
       if(m_state[q] == KEPT) {
-        typename Mesh::Quad quad;
+        typename Mesh::Quad& quad = m_mesh.quads[r.core_to_input_quad.size()];
         for(int c = 0; c < 4; ++c) quad[c] = new_index[m_mesh.quads[q][c]];
-        r.core.quads.push_back(quad);
         r.core_to_input_quad.push_back(q);
       }
+    m_mesh.quads.resize(kept_quads);
+    m_mesh.points.reserve(kept_points + room);
+    m_mesh.quads.reserve(kept_quads + room);
+    r.core = std::move(m_mesh);
     return r;
   }
 
-  const Mesh& m_mesh;
+  Mesh m_mesh; // the input, compacted into the core by output()
   const std::vector<double>& m_size;
   const Domain_2<K>& m_domain;
   const Domain_loops_2<K>& m_loops;
   const K& m_traits;
-  std::vector<State> m_state;
+  Array<State> m_state;
   Domain_segments<K> m_boundary;
   std::vector<std::size_t> m_candidates;
-  std::vector<Index> m_nb;
-  std::vector<Index> m_vq_begin, m_vq;
-  std::vector<Index> m_quads_at; // the number of input quads at each vertex
+  Array<Index> m_nb;
+  Array<Index> m_vq_begin, m_vq;
+  Array<Index> m_quads_at; // the number of input quads at each vertex
   // fans_at()'s buffers; m_local holds corners 4q+c
   std::vector<Index> m_local, m_fan_quads;
   std::vector<std::size_t> m_fan_begin, m_stack;
@@ -564,16 +579,16 @@ private:
 /// Buffer zone clearance (paper §4.3), see the rules at the top of this file.
 ///
 /// \param mesh a conforming all-quad mesh, convex CCW quads, covering the domain's bounding
-///   grid (e.g. `templated_mesh(tree, &quad_cells)`)
+///   grid (e.g. `templated_mesh(tree, &quad_cells)`); moved in, it becomes the core
 /// \param quad_size `quad_size[q]`: the size s_q of quad q, the side of the quadtree cell it
 ///   came from (`tree.cell_side(quad_cells[q].level)`)
 /// \param domain, loops the domain and its validated loops (`extract_loops(domain)`)
 template <class K>
-Clearance_result<K> clear_buffer_zone(const Quad_mesh_2<typename K::Point_2>& mesh,
+Clearance_result<K> clear_buffer_zone(Quad_mesh_2<typename K::Point_2> mesh,
                                       const std::vector<double>& quad_size, const Domain_2<K>& domain,
                                       const Domain_loops_2<K>& loops, const K& traits = K())
 {
-  Buffer_zone_clearance<K> c(mesh, quad_size, domain, loops, traits);
+  Buffer_zone_clearance<K> c(std::move(mesh), quad_size, domain, loops, traits);
   return c.run();
 }
 
