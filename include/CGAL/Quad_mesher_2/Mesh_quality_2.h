@@ -150,13 +150,12 @@ public:
         m_codes[fill[(std::min)(a, b)]++] = 2 * (4 * q + k) + (a < b ? 1 : 0);
       }
     }
-    auto larger = [&](std::size_t code) { return (std::max)(source(code / 2), target(code / 2)); };
     for(std::size_t i = 0; i < number_of_points; ++i) {
       std::size_t* first = m_codes.get() + m_offsets[i];
       std::size_t* last = m_codes.get() + m_offsets[i + 1];
       if(last - first > 1)
         std::sort(first, last, [&](std::size_t x, std::size_t y) {
-          const std::size_t lx = larger(x), ly = larger(y);
+          const std::size_t lx = larger_endpoint(x), ly = larger_endpoint(y);
           return lx < ly || (lx == ly && x < y);
         });
     }
@@ -168,16 +167,14 @@ public:
   /// the code of entry `i`
   std::size_t code(std::size_t i) const { return m_codes[i]; }
   /// the larger endpoint of entry `i`
-  std::size_t other(std::size_t i) const
-  {
-    const std::size_t h = m_codes[i] / 2;
-    return (std::max)(source(h), target(h));
-  }
+  std::size_t other(std::size_t i) const { return larger_endpoint(m_codes[i]); }
 
   std::size_t source(std::size_t h) const { return m_quads[h / 4][h % 4]; }
   std::size_t target(std::size_t h) const { return m_quads[h / 4][(h % 4 + 1) % 4]; }
 
 private:
+  std::size_t larger_endpoint(std::size_t code) const { return (std::max)(source(code / 2), target(code / 2)); }
+
   const std::vector<std::array<std::size_t, 4>>& m_quads;
   std::vector<std::size_t> m_offsets;
   std::unique_ptr<std::size_t[]> m_codes;

@@ -611,16 +611,8 @@ private:
     enum Side : unsigned char { UNKNOWN, INSIDE, OUTSIDE };
     // Room for the cells of that size the domain's area holds: fewer than it gets (the
     // boundary's cells come on top), so never a larger node map than growing would make.
-    auto x_of = m_traits.compute_x_2_object();
-    auto y_of = m_traits.compute_y_2_object();
-    double area = 0; // the loops' signed areas: holes run clockwise
-    for(const auto& loop : m_loops.loops)
-      for(std::size_t k = 0, n = loop.vertices.size(); k < n; ++k) {
-        const Point_2& a = m_domain.points[loop.vertices[k]];
-        const Point_2& b = m_domain.points[loop.vertices[(k + 1) % n]];
-        area += CGAL::to_double(x_of(a)) * CGAL::to_double(y_of(b)) - CGAL::to_double(x_of(b)) * CGAL::to_double(y_of(a));
-      }
-    m_tree->reserve(std::size_t(area / 2 / (side * side)));
+    const double area = CGAL::to_double(domain_area(m_domain, m_loops, m_traits));
+    m_tree->reserve(std::size_t(area / (side * side)));
     const internal::Domain_segments<GeomTraits> boundary(m_domain, m_loops, m_traits);
     auto meets_boundary = [&](const Cell_key& k) { // by boxes: it may say yes too often
       bool any = false;
