@@ -17,6 +17,7 @@
 #include <CGAL/Quad_mesher_2/Quadtree_mesher_2.h>
 #include <CGAL/Quad_mesher_2/internal/buffer_layers.h>
 
+#include <CGAL/Bbox_2.h>
 #include <CGAL/Polygon_2.h>
 
 #include <gtest/gtest.h>
@@ -761,11 +762,14 @@ TEST(Buffer_layers, bird_and_its_mirror_image_meet_45_135_but_at_sharp_corners)
 }
 
 // the loops of `d` but its first (the outer one) whose vertices all lie in the box, as holes
-// (with their hole points) in that box
-Domain islands_in_box(const Domain& d, double x0, double x1, double y0, double y1)
+// (with their hole points) in that box, or in `frame` if given
+Domain islands_in_box(const Domain& d, double x0, double x1, double y0, double y1,
+                      const CGAL::Bbox_2* frame = nullptr)
 {
   Domain out;
-  out.points = { Point(x0, y0), Point(x1, y0), Point(x1, y1), Point(x0, y1) };
+  const CGAL::Bbox_2 box = frame != nullptr ? *frame : CGAL::Bbox_2(x0, y0, x1, y1);
+  out.points = { Point(box.xmin(), box.ymin()), Point(box.xmax(), box.ymin()), Point(box.xmax(), box.ymax()),
+                 Point(box.xmin(), box.ymax()) };
   out.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 } };
   std::vector<std::size_t> next(d.points.size(), std::size_t(-1));
   for(const auto& s : d.segments) next[s[0]] = s[1];
@@ -810,6 +814,31 @@ TEST(Buffer_layers, twelve_bahamas_islands_meet_45_135_but_at_sharp_corners)
   // the buffer's final check's slack (Buffer_layers::verifier_slack, verify_mesh.py's):
   // coordinates near 78 with cells of 1e-6 hold an angle to about 1e-9 degrees
   expect_45_135_but_at_input_corners(d, m, "twelve Bahamas islands", 1e-7);
+}
+
+// Two Bahamas islands where they lie, in the bounding box of all 276 (so that the quadtree's
+// lattice, and with it the strips, are as in the whole file). The island's 281-degree tip at
+// (-77.94317, 24.33101) ends a straight coast along which the ladder of projection quads
+// cannot switch phase; with three F points on the tip's node that phase left the pairing a
+// fan of two (145.9 degrees, every refinement round; 146.0 in the whole file). Four F points
+// make a fan of three in either phase (may_take_four_fan_points()).
+TEST(Buffer_layers, a_reflex_tip_after_a_straight_coast_gets_a_fan_of_three)
+{
+  const std::string name = "bahamas_islands/bahamas_islands.poly";
+  if(!std::ifstream(std::string(QM2_SHARED_DATA_DIR) + "/" + name))
+    GTEST_SKIP() << "no " << name << " in the shared data";
+  const Domain all = load(name);
+  const CGAL::Bbox_2 bbox = CGAL::bbox_2(all.points.begin(), all.points.end());
+  const Domain d = islands_in_box(all, -77.96, -77.83, 24.31, 24.40, &bbox);
+  ASSERT_EQ(d.holes.size(), 2u);
+  Mesh m;
+  mesh_and_check(d, "two Bahamas islands", QM::Mesh_criteria_2<K>(), &m);
+  expect_45_135_but_at_input_corners(d, m, "two Bahamas islands", 1e-7);
+  const auto tip = std::find_if(d.points.begin(), d.points.end(), [](const Point& p) {
+    return std::abs(CGAL::to_double(p.x()) + 77.94317) < 1e-5 && std::abs(CGAL::to_double(p.y()) - 24.33101) < 1e-5;
+  });
+  ASSERT_NE(tip, d.points.end());
+  EXPECT_EQ(angles_at(m, *tip).size(), 3u);
 }
 
 TEST(Buffer_layers, dumbbell_with_a_narrow_channel_meets_45_135)

@@ -41,7 +41,8 @@
 //    are paired into quads: F/G pairs are the paper's projection quads, G/G pairs fan around
 //    an F point (the paper's corner quad P-N-M-L of Fig. 8(b)), F/F pairs around a reflex
 //    corner fan at the corner (Fig. 8(d)); a corner over 225 degrees keeps three F points on
-//    its node, so that its fan has three quads. Where the F edges meet the G edges and how the
+//    its node, so that its fan has three quads (four over 270 degrees where three left it a
+//    fan of two: see may_take_four_fan_points()). Where the F edges meet the G edges and how the
 //    triangles pair is chosen by dynamic programming around each loop, minimising the sum of
 //    the quads' squared deviations from 90 degrees, with a heavy penalty outside [45, 135] and
 //    a prohibitive one for invalid quads. Each gap may also take one more chain node (the
@@ -1295,7 +1296,7 @@ private:
   {
     const double b = cost(q);
     if(b <= 45.0 + angle_tolerance || b >= 1000.0) return b;
-    return fixed_angle_out_of_range(q) >= 0 || wide_side_of_reflex_fan(q) ? b + 100.0 : b;
+    return fixed_angle_out_of_range(q) >= 0 || wide_side_of_reflex_fan(q) >= 0 ? b + 100.0 : b;
   }
 
   // the corner (0 to 3) of q at a boundary node between two others whose angle is out of
@@ -1311,19 +1312,19 @@ private:
     return -1;
   }
 
-  // true if q has over 135 degrees at an input corner over 270 degrees, between a boundary
-  // node and an F point: a side of a fan of two there, or of a fan of three with an F point
-  // off to one side. A fan of two at such a corner keeps over 135 degrees in one of its quads
+  // the corner (0 to 3) of q with over 135 degrees at an input corner over 270 degrees,
+  // between a boundary node and an F point, or -1: a side of a fan of two there, or of a fan
+  // of three with an F point off to one side. A fan of two at such a corner keeps over 135 degrees in one of its quads
   // however its F point moves (the pairing took two quads of about 147 degrees at a 294-degree
   // island tip over a fan of three whose middle F point, flat for now, the optimizer moves).
-  bool wide_side_of_reflex_fan(const Quad& q) const
+  int wide_side_of_reflex_fan(const Quad& q) const
   {
     for(int k = 0; k < 4; ++k) {
       const std::size_t v = q[k], u = q[(k + 3) % 4], w = q[(k + 1) % 4];
       if(!(input_corner_angle(v) > 270.0) || on_boundary_chain(u) == on_boundary_chain(w)) continue;
-      if(corner_angle_degrees(m_xy[u], m_xy[v], m_xy[w]) > 135.0 + angle_tolerance) return true;
+      if(corner_angle_degrees(m_xy[u], m_xy[v], m_xy[w]) > 135.0 + angle_tolerance) return k;
     }
-    return false;
+    return -1;
   }
 
   // an input vertex, a point on an input edge, or a gap's candidate extra node (an id past the
@@ -1436,420 +1437,473 @@ private:
     // along the loop around it, one node each, at about their own spacing: the strip stays a
     // ladder and the pairing is left free to fan where it pays.
     for(std::size_t r = 0; r < n; ++r) P[r] = (std::min)(P[r], O + L);
-    std::vector<bool> spread(n, false); // the points spread around a shared node: a corner's fan
-    // A corner wider than 225 degrees needs three F points on its node for a fan of three
-    // quads (see needs_fan_of_three): where fewer project onto it, the nearest neighbours
-    // (free, on their own nodes) join them.
-    for(std::size_t a = 1; a + 1 < n; ++a) {
-      const std::size_t k = snap[rot(a)];
-      if(k == none || P[a - 1] == P[a] || !needs_fan_of_three(l, k)) continue;
-      std::size_t lo = a, hi = a;
-      while(hi + 1 < n && P[hi + 1] == P[a]) ++hi;
-      const Point_2d corner = loop_xy[k];
-      auto free_point = [&](std::size_t r) {
-        return r > 0 && r + 1 < n && snap[rot(r)] == none && P[r - 1] != P[r] && P[r + 1] != P[r];
-      };
-      while(hi - lo < 2) {
-        const bool before = free_point(lo - 1), after = hi + 2 < n && free_point(hi + 1);
-        if(!before && !after) break;
-        const double db = before ? length_2d(minus_2d(F[rot(lo - 1)], corner)) : HUGE_VAL;
-        const double da = after ? length_2d(minus_2d(F[rot(hi + 1)], corner)) : HUGE_VAL;
-        const std::size_t r = db <= da ? --lo : ++hi;
-        P[r] = P[a];
-        snap[rot(r)] = k;
-      }
-      a = hi;
-    }
-    for(std::size_t a = 0; a < n;) {
-      std::size_t b = a;
-      while(b + 1 < n && P[b + 1] == P[a]) ++b;
-      const bool at_end = P[a] >= O + L;
-      if(b == a && !at_end) { ++a; continue; }
-      const double p0 = P[a];
-      const double before = a == 0 ? p0 : P[a - 1];
-      const double after = b + 1 < n ? P[b + 1] : O + L;
-      // the anchor keeps the node; at the start it must stay first, at the end nothing may
-      // reach the start again
-      std::size_t anchor = a == 0 ? 0 : (at_end ? n : (a + b) / 2);
-      // Around a corner wider than 225 degrees three of them stay on the corner's node. The
-      // pairing can make a node the apex of one F triangle per gap it bounds: two spread nodes
-      // leave the corner two quads, over 112.5 degrees each; three F points on it make a fan of
-      // three (paper Fig. 8(d)).
-      std::size_t last_kept = anchor;
-      if(!at_end && snap[rot(a)] != none && needs_fan_of_three(l, snap[rot(a)])) {
-        std::size_t first_kept = a == 0 ? 0 : (std::max)(a, anchor - 1);
-        // a needle's F points wrap around its tip, so neither the bisector nor the fan's
-        // parallelogram below means much there (the 6-degree spike test: 168 degrees with them)
-        const bool needle = domain_angle(l, snap[rot(a)]) > 340.0;
-        // of more than three, those whose middle one lies nearest the corner's bisector
-        if(a != 0 && b - a > 2 && !needle) {
-          const std::size_t k = snap[rot(a)];
-          const Point_2d C = loop_xy[k];
-          const Point_2d bis = right_bisector(loop_xy[(k + nv - 1) % nv], C, loop_xy[(k + 1) % nv]);
-          double best = HUGE_VAL;
-          for(std::size_t s = a; s + 2 <= b; ++s) {
-            const double d = dot_2d(normalized_2d(minus_2d(F[rot(s + 1)], C)), bis); // -1 on the bisector
-            if(d < best) { best = d; first_kept = s; }
-          }
-        }
-        last_kept = (std::min)(b, first_kept + 2);
-        anchor = first_kept;
-        if(last_kept == first_kept + 2 && !needle)
-          open_fan(c, rot(first_kept), rot(first_kept + 1), rot(last_kept), loop_xy[snap[rot(a)]]);
-      }
-      auto spacing = [&](std::size_t r1, std::size_t r2) {
-        return length_2d(minus_2d(F[rot(r1)], F[rot(r2)]));
-      };
-      if(anchor > a) { // a .. anchor-1 go before p0
-        const std::size_t cnt = (anchor == n ? b + 1 : anchor) - a;
-        const double room = (p0 - before) / double(cnt + 1);
-        double s = p0;
-        for(std::size_t r = (anchor == n ? b + 1 : anchor); r-- > a;) {
-          s -= (std::min)(room, spacing(r, r + 1 < n ? r + 1 : r));
-          P[r] = s;
-          snap[rot(r)] = none;
-          hit[rot(r)] = locate_param(l, s);
-        }
-      }
-      if(anchor < n && b > last_kept) { // last_kept+1 .. b go after p0
-        const double room = (after - p0) / double(b - last_kept + 1);
-        double s = p0;
-        for(std::size_t r = last_kept + 1; r <= b; ++r) {
-          s += (std::min)(room, spacing(r, r - 1));
-          P[r] = s;
-          snap[rot(r)] = none;
-          hit[rot(r)] = locate_param(l, s);
-        }
-      }
-      for(std::size_t r = a; r <= b; ++r) {
-        share[r] = r > anchor && r <= last_kept ? anchor : none;
-        spread[r] = true;
-      }
-      a = b + 1;
-    }
-
-    // candidate nodes, by parameter from O: loop vertices and the F points' own projections
-    struct Node { double param; std::size_t vertex; std::size_t owner; Point_2d xy; bool keep; };
-    std::vector<Node> nodes;
-    std::vector<bool> snapped(nv, false);
-    for(std::size_t r = 0; r < n; ++r)
-      if(share[r] == none && snap[rot(r)] != none) snapped[snap[rot(r)]] = true;
-    for(std::size_t k = 0; k < nv; ++k) {
-      double s = std::fmod(m_locator->arc(l, k) - O, L);
-      if(s < 0) s += L;
-      nodes.push_back(Node{ O + s, k, none, loop_xy[k], snapped[k] || is_feature(l, k) });
-    }
-    for(std::size_t r = 0; r < n; ++r)
-      if(share[r] == none && snap[rot(r)] == none && P[r] < O + L * (1 - 1e-12))
-        nodes.push_back(Node{ P[r], none, r, hit[rot(r)].point, true });
-    std::stable_sort(nodes.begin(), nodes.end(), [](const Node& x, const Node& y) {
-      return x.param < y.param || (x.param == y.param && x.vertex != none && y.vertex == none);
-    });
-    // a projection on a vertex (to rounding) is that vertex; a second one shares it
-    std::vector<std::size_t> alias_vertex(n, none);
-    {
-      const double tol = (std::max)(1e-9 * L, 1e-8 * m_locator->diagonal()); // verify_mesh merges at 1e-9 of the diagonal
-      std::vector<Node> merged;
-      for(const Node& nd : nodes) {
-        if(!merged.empty() && nd.param - merged.back().param <= tol
-           && (nd.vertex == none) != (merged.back().vertex == none)) {
-          const bool back_is_vertex = merged.back().vertex != none;
-          Node vertex_node = back_is_vertex ? merged.back() : nd;
-          const std::size_t owner = back_is_vertex ? nd.owner : merged.back().owner;
-          if(vertex_node.owner == none) vertex_node.owner = owner;
-          else alias_vertex[owner] = vertex_node.vertex;
-          vertex_node.keep = true;
-          merged.back() = vertex_node;
-          continue;
-        }
-        merged.push_back(nd);
-      }
-      nodes = std::move(merged);
-    }
-    // Loop vertices that are no corners (they turn the boundary by less than the feature
-    // angle) and hold no node may be left out where the chord between the kept nodes around
-    // them stays within the tolerance (Douglas-Peucker): that keeps the strip a ladder.
-    {
-      const std::size_t N = nodes.size();
-      std::vector<std::size_t> kept_at;
-      for(std::size_t k = 0; k < N; ++k) if(nodes[k].keep) kept_at.push_back(k);
-      if(kept_at.empty()) { nodes[0].keep = true; kept_at.push_back(0); }
-      std::vector<std::pair<std::size_t, std::size_t>> runs; // (a, b) kept, b after a cyclically
-      for(std::size_t j = 0; j < kept_at.size(); ++j)
-        runs.emplace_back(kept_at[j], kept_at[(j + 1) % kept_at.size()]);
-      while(!runs.empty()) {
-        auto [a, b] = runs.back();
-        runs.pop_back();
-        const std::size_t len = (b + N - a) % N == 0 ? N : (b + N - a) % N;
-        const Point_2d A = nodes[a].xy, B = nodes[b].xy;
-        const double chord = length_2d(minus_2d(B, A));
-        const double tol = m_chord_tolerance;
-        double worst = -1;
-        std::size_t at = none;
-        for(std::size_t j = 1; j < len; ++j) {
-          const std::size_t k = (a + j) % N;
-          const double d = point_segment_distance(nodes[k].xy, A, B);
-          if(d > worst) { worst = d; at = k; }
-        }
-        if(at == none) continue;
-        if(worst > tol || chord == 0) {
-          nodes[at].keep = true;
-          runs.emplace_back(a, at);
-          runs.emplace_back(at, b);
-        }
-      }
-    }
-    // A kept loop vertex wider than 135 degrees that no F point projects onto may become the
-    // middle of a fan of boundary edges, a quad with the vertex's own angle: a coarse polygon's
-    // vertices, kept for the chord tolerance and turning by less than the feature angle, are
-    // about as many as the F points (a 24-gon of radius 1 had 8 quads at 165 degrees). Such a
-    // vertex (of those marked in `at`) takes over the node of the nearer projection beside it
-    // in the chain; the first node stays the first F point's, and those spread around a corner
-    // stay its fan's. The chord that then spans the projection's place must keep the nodes
-    // under it within the tolerance.
-    auto take_over_projection_nodes = [&](std::vector<Node>& candidates, std::vector<std::size_t>& alias,
-                                          const std::vector<bool>& at) {
-      const std::size_t N = candidates.size();
-      std::vector<std::size_t> kept;
-      for(std::size_t k = 0; k < N; ++k)
-        if(candidates[k].keep) kept.push_back(k);
-      const std::size_t nk = kept.size();
-      // the nearest node kept before (step N - 1) or after (step 1) candidate k
-      auto kept_beside = [&](std::size_t k, std::size_t step) {
-        do k = (k + step) % N; while(!candidates[k].keep);
-        return k;
-      };
-      auto chord_within_tolerance_without = [&](std::size_t k) {
-        const std::size_t a = kept_beside(k, N - 1), b = kept_beside(k, 1);
-        for(std::size_t i = (a + 1) % N; i != b; i = (i + 1) % N)
-          if(point_segment_distance(candidates[i].xy, candidates[a].xy, candidates[b].xy) > m_chord_tolerance)
-            return false;
-        return true;
-      };
-      for(std::size_t j = 0; j < nk; ++j) {
-        Node& v = candidates[kept[j]];
-        if(v.vertex == none || !at[v.vertex] || v.owner != none || domain_angle(l, v.vertex) <= 135.0) continue;
-        std::size_t take = none;
-        double nearest = HUGE_VAL;
-        for(std::size_t side : { (j + nk - 1) % nk, (j + 1) % nk }) {
-          const Node& p = candidates[kept[side]];
-          if(!p.keep || p.vertex != none || p.owner == none || p.owner == 0 || spread[p.owner]) continue;
-          const double d = std::abs(cyclic(p.param - v.param));
-          if(d < nearest && chord_within_tolerance_without(kept[side])) { nearest = d; take = kept[side]; }
-        }
-        if(take == none) continue;
-        v.owner = candidates[take].owner;
-        alias[v.owner] = v.vertex;
-        candidates[take].keep = false;
-      }
-    };
-    // The pairing of the strip, from the candidate nodes (copies: a second plan starts afresh).
+    // The strip's pairing, with four F points on the node of each corner marked in `four_at`
+    // (see may_take_four_fan_points()) and three on the others' (copies: a second plan starts
+    // afresh).
     struct Strip_plan { bool ok = false; Strip_result best; std::vector<std::size_t> gid; };
-    auto plan_strip = [&](std::vector<Node> nodes, std::vector<std::size_t> alias_vertex,
-                          const std::vector<bool>& take_over_at) {
-      Strip_plan plan;
-      take_over_projection_nodes(nodes, alias_vertex, take_over_at);
-      std::vector<Node> chain;
-      std::vector<std::size_t> chain_of_node(nodes.size(), none);
-      for(std::size_t k = 0; k < nodes.size(); ++k)
-        if(nodes[k].keep) { chain_of_node[k] = chain.size(); chain.push_back(nodes[k]); }
-      const std::size_t M0 = chain.size();
-      std::vector<std::size_t> gid(M0);
-      for(std::size_t k = 0; k < M0; ++k)
-        gid[k] = chain[k].vertex != none ? input_vertex_point(l, chain[k].vertex)
-                                         : point_on_edge(l, hit[rot(chain[k].owner)].edge, hit[rot(chain[k].owner)].t);
-      std::vector<std::size_t> node_of_vertex(nv, none), node_of_owner(n, none);
-      for(std::size_t k = 0; k < M0; ++k) {
-        if(chain[k].vertex != none) node_of_vertex[chain[k].vertex] = k;
-        if(chain[k].owner != none) node_of_owner[chain[k].owner] = k;
+    auto plan_with = [&, P_start = P, snap_start = snap, hit_start = hit, share_start = share](
+                         const std::vector<bool>& four_at) {
+      std::vector<double> P = P_start;
+      std::vector<std::size_t> snap = snap_start, share = share_start;
+      std::vector<Loop_locator::Hit> hit = hit_start;
+      std::vector<bool> spread(n, false); // the points spread around a shared node: a corner's fan
+      // A corner wider than 225 degrees needs three F points on its node for a fan of three
+      // quads (see needs_fan_of_three), four where `four_at` asks it: where fewer project onto
+      // it, the nearest neighbours (free, on their own nodes) join them.
+      for(std::size_t a = 1; a + 1 < n; ++a) {
+        const std::size_t k = snap[rot(a)];
+        if(k == none || P[a - 1] == P[a] || !needs_fan_of_three(l, k)) continue;
+        std::size_t lo = a, hi = a;
+        while(hi + 1 < n && P[hi + 1] == P[a]) ++hi;
+        const Point_2d corner = loop_xy[k];
+        auto free_point = [&](std::size_t r) {
+          return r > 0 && r + 1 < n && snap[rot(r)] == none && P[r - 1] != P[r] && P[r + 1] != P[r];
+        };
+        while(hi - lo + 1 < (four_at[k] ? 4u : 3u)) {
+          const bool before = free_point(lo - 1), after = hi + 2 < n && free_point(hi + 1);
+          if(!before && !after) break;
+          const double db = before ? length_2d(minus_2d(F[rot(lo - 1)], corner)) : HUGE_VAL;
+          const double da = after ? length_2d(minus_2d(F[rot(hi + 1)], corner)) : HUGE_VAL;
+          const std::size_t r = db <= da ? --lo : ++hi;
+          P[r] = P[a];
+          snap[rot(r)] = k;
+        }
+        a = hi;
       }
-      std::vector<std::size_t> g(n);
-      for(std::size_t r = 0; r < n; ++r) {
-        if(share[r] != none) { g[r] = g[share[r]]; continue; }
-        if(P[r] >= O + L * (1 - 1e-12)) { g[r] = M0; continue; } // projects past the start
-        g[r] = snap[rot(r)] != none ? node_of_vertex[snap[rot(r)]]
-               : alias_vertex[r] != none ? node_of_vertex[alias_vertex[r]] : node_of_owner[r];
-        if(g[r] == none) g[r] = r > 0 ? g[r - 1] : 0;
-        if(r > 0 && g[r] < g[r - 1]) g[r] = g[r - 1];
-      }
-      if(g[0] != 0)
-        return plan; // not ok: the chain is out of order
-
-      const std::size_t fbase = m_first_base[c];
-      std::vector<std::size_t> fid(n);
-      for(std::size_t r = 0; r < n; ++r) fid[r] = fbase + rot(r);
-
-      std::vector<double> gparam(gid.size());
-      for(std::size_t k = 0; k < gid.size(); ++k) gparam[k] = chain[k].param;
-      // n F edges and M G edges make n + M triangles, paired into quads. Every gap may take one
-      // more chain node, in the middle of its longest edge (on the loop there, or on a left-out
-      // loop vertex near it): the pairing decides where. It switches a ladder of quads between
-      // its two phases, and makes an odd triangle count even, where that costs least.
-      auto solve = [&]() {
-        const std::size_t M0 = gid.size();
-        std::vector<Extra_node> extra(n);
-        struct Site { std::size_t vertex; double param; };
-        std::vector<Site> sites(n);
-        const std::size_t first_candidate = m_xy.size();
-        for(std::size_t r = 0; r < n; ++r) {
-          const std::size_t g0 = g[r], k = (r + 1 < n ? g[r + 1] : M0) - g0;
-          if(g0 >= M0 || k == 0) continue;
-          std::size_t e = 0;
-          double longest = -1;
-          for(std::size_t j = 0; j < k; ++j) {
-            const double len = length_2d(minus_2d(m_xy[gid[(g0 + j + 1) % M0]], m_xy[gid[g0 + j]]));
-            if(len > longest) { longest = len; e = j; }
-          }
-          const double a = gparam[g0 + e], b = g0 + e + 1 < M0 ? gparam[g0 + e + 1] : gparam[0] + L;
-          const double mid = 0.5 * (a + b);
-          const Loop_locator::Hit h = locate_param(l, mid);
-          // a left-out loop vertex near the middle keeps the input's own point
-          Site site{ none, mid };
-          Point_2d xy = h.point;
-          double nearest = 0.25 * (b - a);
-          for(std::size_t v : { h.edge, (h.edge + 1) % nv }) {
-            const double sv = mid + cyclic(m_locator->arc(l, v) - mid);
-            if(std::abs(sv - mid) < nearest) {
-              nearest = std::abs(sv - mid);
-              site = Site{ v, sv };
-              xy = loop_xy[v];
+      for(std::size_t a = 0; a < n;) {
+        std::size_t b = a;
+        while(b + 1 < n && P[b + 1] == P[a]) ++b;
+        const bool at_end = P[a] >= O + L;
+        if(b == a && !at_end) { ++a; continue; }
+        const double p0 = P[a];
+        const double before = a == 0 ? p0 : P[a - 1];
+        const double after = b + 1 < n ? P[b + 1] : O + L;
+        // the anchor keeps the node; at the start it must stay first, at the end nothing may
+        // reach the start again
+        std::size_t anchor = a == 0 ? 0 : (at_end ? n : (a + b) / 2);
+        // Around a corner wider than 225 degrees three of them (or four: `four_at`) stay on
+        // the corner's node. The pairing can make a node the apex of one F triangle per gap it
+        // bounds: two spread nodes leave the corner two quads, over 112.5 degrees each; three F
+        // points on it make a fan of three (paper Fig. 8(d)).
+        std::size_t last_kept = anchor;
+        if(!at_end && snap[rot(a)] != none && needs_fan_of_three(l, snap[rot(a)])) {
+          const std::size_t k = snap[rot(a)], kept = four_at[k] ? 4 : 3;
+          std::size_t first_kept = a == 0 ? 0 : (std::max)(a, anchor - 1);
+          // a needle's F points wrap around its tip, so neither the bisector nor the fan's
+          // parallelogram below means much there (the 6-degree spike test: 168 degrees with them)
+          const bool needle = domain_angle(l, k) > 340.0;
+          // of more, those whose middle lies nearest the corner's bisector
+          if(a != 0 && b - a + 1 > kept && !needle) {
+            const Point_2d C = loop_xy[k];
+            const Point_2d bis = right_bisector(loop_xy[(k + nv - 1) % nv], C, loop_xy[(k + 1) % nv]);
+            double best = HUGE_VAL;
+            for(std::size_t s = a; s + kept - 1 <= b; ++s) {
+              Point_2d mid = normalized_2d(minus_2d(F[rot(s + 1)], C));
+              if(kept == 4) {
+                const Point_2d other = normalized_2d(minus_2d(F[rot(s + 2)], C));
+                mid = normalized_2d(Point_2d{ mid.x + other.x, mid.y + other.y });
+              }
+              const double d = dot_2d(mid, bis); // -1 on the bisector
+              if(d < best) { best = d; first_kept = s; }
             }
           }
-          sites[r] = site;
-          extra[r] = Extra_node{ e, m_xy.size() };
-          if(site.vertex != none) { // the pairing costs its angle as the input vertex it is
-            m_corner_angle.resize(m_xy.size() + 1, std::numeric_limits<double>::quiet_NaN());
-            m_corner_angle[m_xy.size()] = domain_angle(l, site.vertex);
-          }
-          m_xy.push_back(xy);
+          last_kept = (std::min)(b, first_kept + kept - 1);
+          anchor = first_kept;
+          if(last_kept == first_kept + 2 && !needle)
+            open_fan(c, rot(first_kept), rot(first_kept + 1), rot(last_kept), loop_xy[k]);
         }
-        Strip_result res = pair_strip(fid, gid, g, extra);
-        // the candidates had ids of their own past the mesh's points (the cost cache knows quads
-        // by their ids); the chosen ones become mesh points
-        m_xy.resize(first_candidate);
-        m_corner_angle.resize((std::min)(m_corner_angle.size(), first_candidate));
-        for(auto it = m_cost_cache.begin(); it != m_cost_cache.end();) {
-          bool candidate = false;
-          for(std::size_t v : it->first) candidate = candidate || v >= first_candidate;
-          it = candidate ? m_cost_cache.erase(it) : std::next(it);
-        }
-        std::vector<std::size_t> real_id(n, none); // by candidate id - first_candidate
-        for(std::size_t r = n; r-- > 0;) { // from the back: earlier chain positions stay valid
-          if(!res.inserted[r]) continue;
-          std::size_t id;
-          if(sites[r].vertex != none) {
-            id = input_vertex_point(l, sites[r].vertex);
-          } else {
-            const Loop_locator::Hit h = locate_param(l, sites[r].param);
-            id = point_on_edge(l, h.edge, h.t);
-          }
-          real_id[extra[r].id - first_candidate] = id;
-          const std::size_t after = g[r] + extra[r].edge;
-          gid.insert(gid.begin() + std::ptrdiff_t(after + 1), id);
-          gparam.insert(gparam.begin() + std::ptrdiff_t(after + 1), sites[r].param);
-          for(auto& x : g) if(x > after) ++x;
-        }
-        for(Quad& q : res.quads)
-          for(std::size_t& v : q)
-            if(v >= first_candidate && v - first_candidate < real_id.size()) v = real_id[v - first_candidate];
-        return res;
-      };
-      m_cache_costs = true;
-      Strip_result best = solve();
-      // A fan of boundary edges that is flat (its middle node is no input vertex and lies on a
-      // straight piece of the boundary) cannot be made a quad: such a node is taken out and the
-      // strip paired again.
-      for(int attempt = 0; attempt < 8 && best.cost.sum >= 1e12; ++attempt) {
-        // a chain node that may be left out: not the first, not an input vertex
-        auto removable = [&](std::size_t k) { return k != 0 && !is_input_vertex(gid[k]); };
-        std::vector<std::size_t> removed;
-        for(const Quad& q : best.quads) {
-          std::size_t remove = none;
-          if(cost(q) < 1000.0) continue;
-          std::vector<std::size_t> pos;
-          for(std::size_t v : q) {
-            auto it = std::find(gid.begin(), gid.end(), v);
-            if(it != gid.end()) pos.push_back(std::size_t(it - gid.begin()));
-          }
-          if(pos.size() != 3) continue;
-          const std::size_t M0 = gid.size();
-          // the middle node if it may go, else an end of the fan: with one node fewer nearby the
-          // pairing can put the fan elsewhere
-          for(std::size_t mid : pos) {
-            const bool has_prev = std::find(pos.begin(), pos.end(), (mid + M0 - 1) % M0) != pos.end();
-            const bool has_next = std::find(pos.begin(), pos.end(), (mid + 1) % M0) != pos.end();
-            if(!has_prev || !has_next) continue;
-            for(std::size_t k : { mid, (mid + M0 - 1) % M0, (mid + 1) % M0 })
-              if(remove == none && removable(k) && chord_within_tolerance(l, gid, gparam, k)) remove = k;
-          }
-          if(remove != none) removed.push_back(remove);
-        }
-        if(removed.empty()) break;
-        std::sort(removed.rbegin(), removed.rend());
-        removed.erase(std::unique(removed.begin(), removed.end()), removed.end());
-        auto erase_node = [&](std::size_t remove) {
-          gid.erase(gid.begin() + std::ptrdiff_t(remove));
-          gparam.erase(gparam.begin() + std::ptrdiff_t(remove));
-          for(auto& x : g) if(x >= remove) --x;
+        auto spacing = [&](std::size_t r1, std::size_t r2) {
+          return length_2d(minus_2d(F[rot(r1)], F[rot(r2)]));
         };
-        for(std::size_t remove : removed) // from the back: earlier positions stay valid
-          erase_node(remove);
-        // An odd triangle count would make the pairing put a node back, likely in the same
-        // gap and with it the flat fan: a neighbour of a removed node goes too, if it may.
-        if((n + gid.size()) % 2 != 0) {
-          const std::size_t M1 = gid.size();
-          std::size_t extra = none;
-          for(std::size_t j = 0; j < removed.size() && extra == none; ++j) {
-            // the removed node's successor now sits where it was (positions before it shifted)
-            const std::size_t at = (removed[j] - (removed.size() - 1 - j)) % M1;
-            for(std::size_t k : { at, (at + M1 - 1) % M1 })
-              if(extra == none && removable(k) && chord_within_tolerance(l, gid, gparam, k)) extra = k;
+        if(anchor > a) { // a .. anchor-1 go before p0
+          const std::size_t cnt = (anchor == n ? b + 1 : anchor) - a;
+          const double room = (p0 - before) / double(cnt + 1);
+          double s = p0;
+          for(std::size_t r = (anchor == n ? b + 1 : anchor); r-- > a;) {
+            s -= (std::min)(room, spacing(r, r + 1 < n ? r + 1 : r));
+            P[r] = s;
+            snap[rot(r)] = none;
+            hit[rot(r)] = locate_param(l, s);
           }
-          if(extra != none) erase_node(extra);
         }
-        best = solve();
+        if(anchor < n && b > last_kept) { // last_kept+1 .. b go after p0
+          const double room = (after - p0) / double(b - last_kept + 1);
+          double s = p0;
+          for(std::size_t r = last_kept + 1; r <= b; ++r) {
+            s += (std::min)(room, spacing(r, r - 1));
+            P[r] = s;
+            snap[rot(r)] = none;
+            hit[rot(r)] = locate_param(l, s);
+          }
+        }
+        for(std::size_t r = a; r <= b; ++r) {
+          share[r] = r > anchor && r <= last_kept ? anchor : none;
+          spread[r] = true;
+        }
+        a = b + 1;
       }
-      plan.ok = true;
-      plan.best = std::move(best);
-      plan.gid = std::move(gid);
+
+      // candidate nodes, by parameter from O: loop vertices and the F points' own projections
+      struct Node { double param; std::size_t vertex; std::size_t owner; Point_2d xy; bool keep; };
+      std::vector<Node> nodes;
+      std::vector<bool> snapped(nv, false);
+      for(std::size_t r = 0; r < n; ++r)
+        if(share[r] == none && snap[rot(r)] != none) snapped[snap[rot(r)]] = true;
+      for(std::size_t k = 0; k < nv; ++k) {
+        double s = std::fmod(m_locator->arc(l, k) - O, L);
+        if(s < 0) s += L;
+        nodes.push_back(Node{ O + s, k, none, loop_xy[k], snapped[k] || is_feature(l, k) });
+      }
+      for(std::size_t r = 0; r < n; ++r)
+        if(share[r] == none && snap[rot(r)] == none && P[r] < O + L * (1 - 1e-12))
+          nodes.push_back(Node{ P[r], none, r, hit[rot(r)].point, true });
+      std::stable_sort(nodes.begin(), nodes.end(), [](const Node& x, const Node& y) {
+        return x.param < y.param || (x.param == y.param && x.vertex != none && y.vertex == none);
+      });
+      // a projection on a vertex (to rounding) is that vertex; a second one shares it
+      std::vector<std::size_t> alias_vertex(n, none);
+      {
+        const double tol = (std::max)(1e-9 * L, 1e-8 * m_locator->diagonal()); // verify_mesh merges at 1e-9 of the diagonal
+        std::vector<Node> merged;
+        for(const Node& nd : nodes) {
+          if(!merged.empty() && nd.param - merged.back().param <= tol
+             && (nd.vertex == none) != (merged.back().vertex == none)) {
+            const bool back_is_vertex = merged.back().vertex != none;
+            Node vertex_node = back_is_vertex ? merged.back() : nd;
+            const std::size_t owner = back_is_vertex ? nd.owner : merged.back().owner;
+            if(vertex_node.owner == none) vertex_node.owner = owner;
+            else alias_vertex[owner] = vertex_node.vertex;
+            vertex_node.keep = true;
+            merged.back() = vertex_node;
+            continue;
+          }
+          merged.push_back(nd);
+        }
+        nodes = std::move(merged);
+      }
+      // Loop vertices that are no corners (they turn the boundary by less than the feature
+      // angle) and hold no node may be left out where the chord between the kept nodes around
+      // them stays within the tolerance (Douglas-Peucker): that keeps the strip a ladder.
+      {
+        const std::size_t N = nodes.size();
+        std::vector<std::size_t> kept_at;
+        for(std::size_t k = 0; k < N; ++k) if(nodes[k].keep) kept_at.push_back(k);
+        if(kept_at.empty()) { nodes[0].keep = true; kept_at.push_back(0); }
+        std::vector<std::pair<std::size_t, std::size_t>> runs; // (a, b) kept, b after a cyclically
+        for(std::size_t j = 0; j < kept_at.size(); ++j)
+          runs.emplace_back(kept_at[j], kept_at[(j + 1) % kept_at.size()]);
+        while(!runs.empty()) {
+          auto [a, b] = runs.back();
+          runs.pop_back();
+          const std::size_t len = (b + N - a) % N == 0 ? N : (b + N - a) % N;
+          const Point_2d A = nodes[a].xy, B = nodes[b].xy;
+          const double chord = length_2d(minus_2d(B, A));
+          const double tol = m_chord_tolerance;
+          double worst = -1;
+          std::size_t at = none;
+          for(std::size_t j = 1; j < len; ++j) {
+            const std::size_t k = (a + j) % N;
+            const double d = point_segment_distance(nodes[k].xy, A, B);
+            if(d > worst) { worst = d; at = k; }
+          }
+          if(at == none) continue;
+          if(worst > tol || chord == 0) {
+            nodes[at].keep = true;
+            runs.emplace_back(a, at);
+            runs.emplace_back(at, b);
+          }
+        }
+      }
+      // A kept loop vertex wider than 135 degrees that no F point projects onto may become the
+      // middle of a fan of boundary edges, a quad with the vertex's own angle: a coarse polygon's
+      // vertices, kept for the chord tolerance and turning by less than the feature angle, are
+      // about as many as the F points (a 24-gon of radius 1 had 8 quads at 165 degrees). Such a
+      // vertex (of those marked in `at`) takes over the node of the nearer projection beside it
+      // in the chain; the first node stays the first F point's, and those spread around a corner
+      // stay its fan's. The chord that then spans the projection's place must keep the nodes
+      // under it within the tolerance.
+      auto take_over_projection_nodes = [&](std::vector<Node>& candidates, std::vector<std::size_t>& alias,
+                                            const std::vector<bool>& at) {
+        const std::size_t N = candidates.size();
+        std::vector<std::size_t> kept;
+        for(std::size_t k = 0; k < N; ++k)
+          if(candidates[k].keep) kept.push_back(k);
+        const std::size_t nk = kept.size();
+        // the nearest node kept before (step N - 1) or after (step 1) candidate k
+        auto kept_beside = [&](std::size_t k, std::size_t step) {
+          do k = (k + step) % N; while(!candidates[k].keep);
+          return k;
+        };
+        auto chord_within_tolerance_without = [&](std::size_t k) {
+          const std::size_t a = kept_beside(k, N - 1), b = kept_beside(k, 1);
+          for(std::size_t i = (a + 1) % N; i != b; i = (i + 1) % N)
+            if(point_segment_distance(candidates[i].xy, candidates[a].xy, candidates[b].xy) > m_chord_tolerance)
+              return false;
+          return true;
+        };
+        for(std::size_t j = 0; j < nk; ++j) {
+          Node& v = candidates[kept[j]];
+          if(v.vertex == none || !at[v.vertex] || v.owner != none || domain_angle(l, v.vertex) <= 135.0) continue;
+          std::size_t take = none;
+          double nearest = HUGE_VAL;
+          for(std::size_t side : { (j + nk - 1) % nk, (j + 1) % nk }) {
+            const Node& p = candidates[kept[side]];
+            if(!p.keep || p.vertex != none || p.owner == none || p.owner == 0 || spread[p.owner]) continue;
+            const double d = std::abs(cyclic(p.param - v.param));
+            if(d < nearest && chord_within_tolerance_without(kept[side])) { nearest = d; take = kept[side]; }
+          }
+          if(take == none) continue;
+          v.owner = candidates[take].owner;
+          alias[v.owner] = v.vertex;
+          candidates[take].keep = false;
+        }
+      };
+      // The pairing of the strip, from the candidate nodes (copies: a second plan starts afresh).
+      auto plan_strip = [&](std::vector<Node> nodes, std::vector<std::size_t> alias_vertex,
+                            const std::vector<bool>& take_over_at) {
+        Strip_plan plan;
+        take_over_projection_nodes(nodes, alias_vertex, take_over_at);
+        std::vector<Node> chain;
+        std::vector<std::size_t> chain_of_node(nodes.size(), none);
+        for(std::size_t k = 0; k < nodes.size(); ++k)
+          if(nodes[k].keep) { chain_of_node[k] = chain.size(); chain.push_back(nodes[k]); }
+        const std::size_t M0 = chain.size();
+        std::vector<std::size_t> gid(M0);
+        for(std::size_t k = 0; k < M0; ++k)
+          gid[k] = chain[k].vertex != none ? input_vertex_point(l, chain[k].vertex)
+                                           : point_on_edge(l, hit[rot(chain[k].owner)].edge, hit[rot(chain[k].owner)].t);
+        std::vector<std::size_t> node_of_vertex(nv, none), node_of_owner(n, none);
+        for(std::size_t k = 0; k < M0; ++k) {
+          if(chain[k].vertex != none) node_of_vertex[chain[k].vertex] = k;
+          if(chain[k].owner != none) node_of_owner[chain[k].owner] = k;
+        }
+        std::vector<std::size_t> g(n);
+        for(std::size_t r = 0; r < n; ++r) {
+          if(share[r] != none) { g[r] = g[share[r]]; continue; }
+          if(P[r] >= O + L * (1 - 1e-12)) { g[r] = M0; continue; } // projects past the start
+          g[r] = snap[rot(r)] != none ? node_of_vertex[snap[rot(r)]]
+                 : alias_vertex[r] != none ? node_of_vertex[alias_vertex[r]] : node_of_owner[r];
+          if(g[r] == none) g[r] = r > 0 ? g[r - 1] : 0;
+          if(r > 0 && g[r] < g[r - 1]) g[r] = g[r - 1];
+        }
+        if(g[0] != 0)
+          return plan; // not ok: the chain is out of order
+
+        const std::size_t fbase = m_first_base[c];
+        std::vector<std::size_t> fid(n);
+        for(std::size_t r = 0; r < n; ++r) fid[r] = fbase + rot(r);
+
+        std::vector<double> gparam(gid.size());
+        for(std::size_t k = 0; k < gid.size(); ++k) gparam[k] = chain[k].param;
+        // n F edges and M G edges make n + M triangles, paired into quads. Every gap may take one
+        // more chain node, in the middle of its longest edge (on the loop there, or on a left-out
+        // loop vertex near it): the pairing decides where. It switches a ladder of quads between
+        // its two phases, and makes an odd triangle count even, where that costs least.
+        auto solve = [&]() {
+          const std::size_t M0 = gid.size();
+          std::vector<Extra_node> extra(n);
+          struct Site { std::size_t vertex; double param; };
+          std::vector<Site> sites(n);
+          const std::size_t first_candidate = m_xy.size();
+          for(std::size_t r = 0; r < n; ++r) {
+            const std::size_t g0 = g[r], k = (r + 1 < n ? g[r + 1] : M0) - g0;
+            if(g0 >= M0 || k == 0) continue;
+            std::size_t e = 0;
+            double longest = -1;
+            for(std::size_t j = 0; j < k; ++j) {
+              const double len = length_2d(minus_2d(m_xy[gid[(g0 + j + 1) % M0]], m_xy[gid[g0 + j]]));
+              if(len > longest) { longest = len; e = j; }
+            }
+            const double a = gparam[g0 + e], b = g0 + e + 1 < M0 ? gparam[g0 + e + 1] : gparam[0] + L;
+            const double mid = 0.5 * (a + b);
+            const Loop_locator::Hit h = locate_param(l, mid);
+            // a left-out loop vertex near the middle keeps the input's own point
+            Site site{ none, mid };
+            Point_2d xy = h.point;
+            double nearest = 0.25 * (b - a);
+            for(std::size_t v : { h.edge, (h.edge + 1) % nv }) {
+              const double sv = mid + cyclic(m_locator->arc(l, v) - mid);
+              if(std::abs(sv - mid) < nearest) {
+                nearest = std::abs(sv - mid);
+                site = Site{ v, sv };
+                xy = loop_xy[v];
+              }
+            }
+            sites[r] = site;
+            extra[r] = Extra_node{ e, m_xy.size() };
+            if(site.vertex != none) { // the pairing costs its angle as the input vertex it is
+              m_corner_angle.resize(m_xy.size() + 1, std::numeric_limits<double>::quiet_NaN());
+              m_corner_angle[m_xy.size()] = domain_angle(l, site.vertex);
+            }
+            m_xy.push_back(xy);
+          }
+          Strip_result res = pair_strip(fid, gid, g, extra);
+          // the candidates had ids of their own past the mesh's points (the cost cache knows quads
+          // by their ids); the chosen ones become mesh points
+          m_xy.resize(first_candidate);
+          m_corner_angle.resize((std::min)(m_corner_angle.size(), first_candidate));
+          for(auto it = m_cost_cache.begin(); it != m_cost_cache.end();) {
+            bool candidate = false;
+            for(std::size_t v : it->first) candidate = candidate || v >= first_candidate;
+            it = candidate ? m_cost_cache.erase(it) : std::next(it);
+          }
+          std::vector<std::size_t> real_id(n, none); // by candidate id - first_candidate
+          for(std::size_t r = n; r-- > 0;) { // from the back: earlier chain positions stay valid
+            if(!res.inserted[r]) continue;
+            std::size_t id;
+            if(sites[r].vertex != none) {
+              id = input_vertex_point(l, sites[r].vertex);
+            } else {
+              const Loop_locator::Hit h = locate_param(l, sites[r].param);
+              id = point_on_edge(l, h.edge, h.t);
+            }
+            real_id[extra[r].id - first_candidate] = id;
+            const std::size_t after = g[r] + extra[r].edge;
+            gid.insert(gid.begin() + std::ptrdiff_t(after + 1), id);
+            gparam.insert(gparam.begin() + std::ptrdiff_t(after + 1), sites[r].param);
+            for(auto& x : g) if(x > after) ++x;
+          }
+          for(Quad& q : res.quads)
+            for(std::size_t& v : q)
+              if(v >= first_candidate && v - first_candidate < real_id.size()) v = real_id[v - first_candidate];
+          return res;
+        };
+        m_cache_costs = true;
+        Strip_result best = solve();
+        // A fan of boundary edges that is flat (its middle node is no input vertex and lies on a
+        // straight piece of the boundary) cannot be made a quad: such a node is taken out and the
+        // strip paired again.
+        for(int attempt = 0; attempt < 8 && best.cost.sum >= 1e12; ++attempt) {
+          // a chain node that may be left out: not the first, not an input vertex
+          auto removable = [&](std::size_t k) { return k != 0 && !is_input_vertex(gid[k]); };
+          std::vector<std::size_t> removed;
+          for(const Quad& q : best.quads) {
+            std::size_t remove = none;
+            if(cost(q) < 1000.0) continue;
+            std::vector<std::size_t> pos;
+            for(std::size_t v : q) {
+              auto it = std::find(gid.begin(), gid.end(), v);
+              if(it != gid.end()) pos.push_back(std::size_t(it - gid.begin()));
+            }
+            if(pos.size() != 3) continue;
+            const std::size_t M0 = gid.size();
+            // the middle node if it may go, else an end of the fan: with one node fewer nearby the
+            // pairing can put the fan elsewhere
+            for(std::size_t mid : pos) {
+              const bool has_prev = std::find(pos.begin(), pos.end(), (mid + M0 - 1) % M0) != pos.end();
+              const bool has_next = std::find(pos.begin(), pos.end(), (mid + 1) % M0) != pos.end();
+              if(!has_prev || !has_next) continue;
+              for(std::size_t k : { mid, (mid + M0 - 1) % M0, (mid + 1) % M0 })
+                if(remove == none && removable(k) && chord_within_tolerance(l, gid, gparam, k)) remove = k;
+            }
+            if(remove != none) removed.push_back(remove);
+          }
+          if(removed.empty()) break;
+          std::sort(removed.rbegin(), removed.rend());
+          removed.erase(std::unique(removed.begin(), removed.end()), removed.end());
+          auto erase_node = [&](std::size_t remove) {
+            gid.erase(gid.begin() + std::ptrdiff_t(remove));
+            gparam.erase(gparam.begin() + std::ptrdiff_t(remove));
+            for(auto& x : g) if(x >= remove) --x;
+          };
+          for(std::size_t remove : removed) // from the back: earlier positions stay valid
+            erase_node(remove);
+          // An odd triangle count would make the pairing put a node back, likely in the same
+          // gap and with it the flat fan: a neighbour of a removed node goes too, if it may.
+          if((n + gid.size()) % 2 != 0) {
+            const std::size_t M1 = gid.size();
+            std::size_t extra = none;
+            for(std::size_t j = 0; j < removed.size() && extra == none; ++j) {
+              // the removed node's successor now sits where it was (positions before it shifted)
+              const std::size_t at = (removed[j] - (removed.size() - 1 - j)) % M1;
+              for(std::size_t k : { at, (at + M1 - 1) % M1 })
+                if(extra == none && removable(k) && chord_within_tolerance(l, gid, gparam, k)) extra = k;
+            }
+            if(extra != none) erase_node(extra);
+          }
+          best = solve();
+        }
+        plan.ok = true;
+        plan.best = std::move(best);
+        plan.gid = std::move(gid);
+        return plan;
+      };
+      // The vertices take over only where the pairing leaves a quad out of range, and the strip
+      // is paired again only if that lowers its cost: elsewhere the pairing may do better by
+      // switching phase at a vertex. First at the vertices a pairing leaves the middle of a fan
+      // out of range (the new pairing may leave one at another vertex: a few rounds); if fans
+      // remain, at every vertex at once (a coarse polygon's fans move round by round).
+      std::vector<bool> take_over_at(nv, false);
+      Strip_plan plan = plan_strip(nodes, alias_vertex, take_over_at);
+      if(plan.ok && plan.best.cost.worst > 45.0 + angle_tolerance) {
+        // the loop vertices at such fans in a pairing (a pairing may add input vertices to the mesh)
+        auto fan_vertices = [&](const Strip_plan& p) {
+          std::unordered_map<std::size_t, std::size_t> loop_vertex_of_point;
+          for(std::size_t k = 0; k < nv; ++k) {
+            auto it = m_input_vertex.find(m_loops.loops[l].vertices[k]);
+            if(it != m_input_vertex.end()) loop_vertex_of_point[it->second] = k;
+          }
+          std::vector<std::size_t> fans;
+          for(const Quad& q : p.best.quads) {
+            const int k = fixed_angle_out_of_range(q);
+            auto it = k < 0 ? loop_vertex_of_point.end() : loop_vertex_of_point.find(q[std::size_t(k)]);
+            if(it != loop_vertex_of_point.end()) fans.push_back(it->second);
+          }
+          return fans;
+        };
+        Strip_plan latest = plan;
+        for(int round = 0; round < 4; ++round) {
+          bool more = false;
+          for(std::size_t k : fan_vertices(latest))
+            if(!take_over_at[k]) more = take_over_at[k] = true;
+          if(!more) break;
+          latest = plan_strip(nodes, alias_vertex, take_over_at);
+          if(!latest.ok) break;
+          if(latest.best.cost < plan.best.cost) plan = latest;
+        }
+        if(!fan_vertices(plan).empty()) {
+          Strip_plan everywhere = plan_strip(nodes, alias_vertex, std::vector<bool>(nv, true));
+          if(everywhere.ok && everywhere.best.cost < plan.best.cost) plan = std::move(everywhere);
+        }
+      }
       return plan;
     };
-    // The vertices take over only where the pairing leaves a quad out of range, and the strip
-    // is paired again only if that lowers its cost: elsewhere the pairing may do better by
-    // switching phase at a vertex. First at the vertices a pairing leaves the middle of a fan
-    // out of range (the new pairing may leave one at another vertex: a few rounds); if fans
-    // remain, at every vertex at once (a coarse polygon's fans move round by round).
-    std::vector<bool> take_over_at(nv, false);
-    Strip_plan plan = plan_strip(nodes, alias_vertex, take_over_at);
-    if(plan.ok && plan.best.cost.worst > 45.0 + angle_tolerance) {
-      // the loop vertices at such fans in a pairing (a pairing may add input vertices to the mesh)
-      auto fan_vertices = [&](const Strip_plan& p) {
-        std::unordered_map<std::size_t, std::size_t> loop_vertex_of_point;
-        for(std::size_t k = 0; k < nv; ++k) {
-          auto it = m_input_vertex.find(m_loops.loops[l].vertices[k]);
-          if(it != m_input_vertex.end()) loop_vertex_of_point[it->second] = k;
-        }
-        std::vector<std::size_t> fans;
-        for(const Quad& q : p.best.quads) {
-          const int k = fixed_angle_out_of_range(q);
-          auto it = k < 0 ? loop_vertex_of_point.end() : loop_vertex_of_point.find(q[std::size_t(k)]);
-          if(it != loop_vertex_of_point.end()) fans.push_back(it->second);
-        }
-        return fans;
-      };
-      Strip_plan latest = plan;
-      for(int round = 0; round < 4; ++round) {
-        bool more = false;
-        for(std::size_t k : fan_vertices(latest))
-          if(!take_over_at[k]) more = take_over_at[k] = true;
-        if(!more) break;
-        latest = plan_strip(nodes, alias_vertex, take_over_at);
-        if(!latest.ok) break;
-        if(latest.best.cost < plan.best.cost) plan = latest;
+    // The mesh points of the strip's F points, which the fans move (open_fan()): a second plan
+    // starts from them as they were, and the chosen plan's stay.
+    const std::size_t fbase = m_first_base[c];
+    auto f_points = [&]() { return std::vector<Point_2>(m_mesh.points.begin() + std::ptrdiff_t(fbase),
+                                                       m_mesh.points.begin() + std::ptrdiff_t(fbase + n)); };
+    auto restore_f_points = [&](const std::vector<Point_2>& saved) {
+      for(std::size_t i = 0; i < n; ++i) {
+        m_mesh.points[fbase + i] = saved[i];
+        m_first[c][i] = m_xy[fbase + i] = to_point_2d(saved[i]);
       }
-      if(!fan_vertices(plan).empty()) {
-        Strip_plan everywhere = plan_strip(nodes, alias_vertex, std::vector<bool>(nv, true));
-        if(everywhere.ok && everywhere.best.cost < plan.best.cost) plan = std::move(everywhere);
+      m_cost_cache.clear(); // it knows quads by their points' ids
+    };
+    const std::vector<Point_2> f_start = f_points();
+    Strip_plan plan = plan_with(std::vector<bool>(nv, false));
+    // A corner over 270 degrees that kept a fan of two (its ladder's phase, see
+    // may_take_four_fan_points()) gets four F points, if that pairs the strip better.
+    if(plan.ok) {
+      std::unordered_map<std::size_t, std::size_t> loop_vertex_of_point;
+      for(std::size_t k = 0; k < nv; ++k) {
+        auto it = m_input_vertex.find(m_loops.loops[l].vertices[k]);
+        if(it != m_input_vertex.end()) loop_vertex_of_point[it->second] = k;
+      }
+      std::vector<bool> four_at(nv, false);
+      bool any = false;
+      for(const Quad& q : plan.best.quads) {
+        const int k = wide_side_of_reflex_fan(q);
+        auto it = k < 0 ? loop_vertex_of_point.end() : loop_vertex_of_point.find(q[std::size_t(k)]);
+        if(it != loop_vertex_of_point.end() && may_take_four_fan_points(l, it->second))
+          any = four_at[it->second] = true;
+      }
+      if(any) {
+        const std::vector<Point_2> f_three = f_points();
+        restore_f_points(f_start);
+        Strip_plan four = plan_with(four_at);
+        if(four.ok && four.best.cost < plan.best.cost) plan = std::move(four);
+        else restore_f_points(f_three);
       }
     }
     m_cache_costs = false;
@@ -2126,6 +2180,21 @@ private:
   // better (75 degrees or more each): near 270 the two quads' split is never even (the guitar's
   // 270-degree notch gave 110 + 160).
   bool needs_fan_of_three(std::size_t l, std::size_t k) const { return domain_angle(l, k) > 225.0; }
+
+  // Whether a fan-of-three corner may keep four F points on its node. Of its triangles around
+  // the node (one per F point, and one more), the pairing joins pairs: with three F points,
+  // four triangles make three quads in one phase of the ladder beside the corner and two in
+  // the other, and the ladder's run along the boundary sets the phase (on a straight coast it
+  // cannot switch: a node added there would make a flat fan). Four F points make five
+  // triangles, hence a fan of three in either phase (bahamas_islands' 281-degree corner at
+  // (-77.94317, 24.33101) kept a fan of two, 146 degrees, round after round). Spaced alpha/5
+  // apart, they give the corner alpha/5, 2 alpha/5 and 2 alpha/5 either way: within 135
+  // degrees up to a corner of 337.5; from 225 to 270 a fan of two fits.
+  bool may_take_four_fan_points(std::size_t l, std::size_t k) const
+  {
+    const double alpha = domain_angle(l, k);
+    return alpha > 270.0 && alpha <= 337.5;
+  }
 
   // a loop vertex the mesh must keep: it turns the boundary by the feature angle or more
   bool is_feature(std::size_t l, std::size_t k) const
