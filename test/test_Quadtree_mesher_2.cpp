@@ -133,6 +133,18 @@ TEST(Quadtree_mesher_2, errors_name_the_points)
   EXPECT_THROW(Mesher(d, Criteria(1e-3, 0, 5)).run(), QM::Meshing_error); // max size too deep
   Domain empty;
   EXPECT_THROW(Mesher(empty).run(), QM::Meshing_error);
+  // a square of subnormal size (the smallest double across) looped for ever
+  for(double side : { 4.9406564584124654e-324, 1e-323, 1e-101 }) {
+    Domain tiny;
+    tiny.points = { K::Point_2(0, 0), K::Point_2(side, 0), K::Point_2(side, side), K::Point_2(0, side) };
+    tiny.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 } };
+    try {
+      Mesher(tiny).run();
+      ADD_FAILURE() << side;
+    } catch(const QM::Meshing_error& e) {
+      EXPECT_NE(std::string(e.what()).find("is too small to mesh"), std::string::npos) << e.what();
+    }
+  }
   EXPECT_THROW(Criteria(-1), QM::Meshing_error);
   EXPECT_THROW(Criteria(std::nan("")), QM::Meshing_error);
   EXPECT_THROW(Criteria(1, 2), QM::Meshing_error);

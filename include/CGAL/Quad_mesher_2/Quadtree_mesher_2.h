@@ -111,6 +111,15 @@ public:
                          CGAL::to_double(m_traits.compute_ymin_2_object()(box)),
                          CGAL::to_double(m_traits.compute_xmax_2_object()(box)),
                          CGAL::to_double(m_traits.compute_ymax_2_object()(box)));
+    // Below this, sizes and steps along the boundary underflow to subnormal doubles or zero
+    // (a square 5e-324 across looped for ever in the narrow-region search).
+    const double extent = (std::max)(m_box.xmax() - m_box.xmin(), m_box.ymax() - m_box.ymin());
+    if(extent > 0 && extent < min_extent) {
+      std::ostringstream msg;
+      msg << "the input's extent " << extent << " is too small to mesh (under " << min_extent
+          << "); scale the input";
+      throw Meshing_error(msg.str());
+    }
     // the whole-mesh check counts vertices closer than 1e-9 of the diagonal as duplicates, and
     // the buffer puts vertices a quarter cell apart: finer cells make a mesh that cannot pass
     // (a point cloud has no buffer, and its points are its finest vertices)
@@ -716,6 +725,7 @@ private:
     }
   }
   static constexpr int boundary_band = 3;
+  static constexpr double min_extent = 1e-100;
 
   // where earlier rounds found the buffer layers poor: one level finer than it was there.
   // Every leaf touching the point is refined, not only the one `locate` picks: most requests
