@@ -531,6 +531,29 @@ TEST(IO_read, WktHoleSeedAvoidsIslandsInTheHole)
   EXPECT_EQ(CGAL::bounded_side_2(island.begin(), island.end(), d.holes[0], K()), CGAL::ON_UNBOUNDED_SIDE);
 }
 
+// OGC forbids overlapping polygons: one inside another's area (not in a hole) became a hole
+// of it by the loops' nesting, and its area was lost without a word (a 4 x 4 square with a
+// unit square polygon inside: area 15).
+TEST(IO_read, WktPolygonInsideAnotherIsAnError)
+{
+  using namespace qm2_test_io_read;
+  for(const std::string wkt : { std::string("MULTIPOLYGON (((0 0, 4 0, 4 4, 0 4, 0 0)), ((1 1, 2 1, 2 2, 1 2, 1 1)))"),
+                                std::string("POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0))\nPOLYGON ((0 0, 2 0, 2 2, 0 2, 0 0))") }) {
+    Domain d;
+    std::string err;
+    std::istringstream in(wkt);
+    EXPECT_FALSE(QIO::read_WKT(in, d, &err)) << wkt;
+    EXPECT_NE(err.find("the outer ring of polygon 2 lies inside polygon 1 (line 1)"), std::string::npos) << err;
+  }
+  // the same square in the other's hole is an island: fine
+  const std::string island = "MULTIPOLYGON (((0 0, 4 0, 4 4, 0 4, 0 0), (0.5 0.5, 3 0.5, 3 3, 0.5 3, 0.5 0.5)),"
+                             " ((1 1, 2 1, 2 2, 1 2, 1 1)))";
+  Domain d;
+  std::string err;
+  std::istringstream in(island);
+  EXPECT_TRUE(QIO::read_WKT(in, d, &err)) << err;
+}
+
 TEST(IO_read, WktManyHolesAndTouchingRings)
 {
   using namespace qm2_test_io_read;

@@ -17,6 +17,7 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <map>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -492,7 +493,6 @@ bool wkt_to_domain(Wkt_data& data, const std::string& source, Domain_2<K>& out, 
     return false;
   }
 
-  // Hole seeds, one per inner ring.
   std::vector<Bbox_2> boxes;
   boxes.reserve(ring_points.size());
   for(const auto& R : ring_points) {
@@ -500,6 +500,43 @@ bool wkt_to_domain(Wkt_data& data, const std::string& source, Domain_2<K>& out, 
     for(const Point_2& q : R) b += q.bbox();
     boxes.push_back(b);
   }
+  // Polygons must not overlap (OGC): a polygon inside another's area, not in one of its holes,
+  // would become a hole of it by the nesting of the loops, and its area would be lost. Rings
+  // that cross are found by the domain's own checks; one vertex of an outer ring off the other
+  // polygon's rings tells whether it lies inside.
+  auto strictly_inside = [&](std::size_t ri, const Point_2& q) {
+    return CGAL::bounded_side_2(ring_points[ri].begin(), ring_points[ri].end(), q, k) == CGAL::ON_BOUNDED_SIDE;
+  };
+  auto on_ring = [&](std::size_t ri, const Point_2& q) {
+    return CGAL::bounded_side_2(ring_points[ri].begin(), ring_points[ri].end(), q, k) == CGAL::ON_BOUNDARY;
+  };
+  std::map<std::size_t, std::vector<std::size_t> > rings_of; // by polygon number
+  for(std::size_t h = 0; h < data.rings.size(); ++h) rings_of[data.rings[h].polygon].push_back(h);
+  for(std::size_t b = 0; b < data.rings.size(); ++b) {
+    if(data.rings[b].index != 1) continue;
+    for(std::size_t a = 0; a < data.rings.size(); ++a) {
+      if(a == b || data.rings[a].index != 1 || !CGAL::do_overlap(boxes[a], boxes[b])) continue;
+      const std::size_t poly = data.rings[a].polygon;
+      const std::vector<std::size_t>& rings_of_a = rings_of[poly];
+      const auto probe = std::find_if(ring_points[b].begin(), ring_points[b].end(), [&](const Point_2& q) {
+        return std::none_of(rings_of_a.begin(), rings_of_a.end(), [&](std::size_t h) { return on_ring(h, q); });
+      });
+      if(probe == ring_points[b].end() || !strictly_inside(a, *probe)) continue;
+      const bool in_a_hole = std::any_of(rings_of_a.begin(), rings_of_a.end(), [&](std::size_t h) {
+        return data.rings[h].index != 1 && strictly_inside(h, *probe);
+      });
+      if(in_a_hole) continue;
+      const std::size_t i = std::size_t(probe - ring_points[b].begin());
+      msg = where(data.rings[b].lines[i]) + data.rings[b].describe() + " lies inside polygon " +
+            std::to_string(poly) + " (line " + std::to_string(data.rings[a].line) + "): its vertex " +
+            format_point(data.rings[b].xy[i][0], data.rings[b].xy[i][1]) + " (line " +
+            std::to_string(data.rings[b].lines[i]) + ") is in that polygon's area; polygons must not "
+            "overlap (an island in a hole is a polygon inside an inner ring)";
+      return false;
+    }
+  }
+
+  // Hole seeds, one per inner ring.
   std::vector<Point_2> holes;
   for(std::size_t ri = 0; ri < data.rings.size(); ++ri) {
     if(data.rings[ri].index == 1) continue;
@@ -546,8 +583,10 @@ bool read_WKT_impl(std::string&& text, const std::string& source, Domain_2<K>& o
 /// shared; an edge shared by two rings, or a POINT equal to another point or ring vertex,
 /// is an error. For each inner ring (hole) a seed point is added to `out.holes`: it lies
 /// strictly inside the hole ring and outside every ring nested in the hole (islands),
-/// checked with exact predicates. Ring orientation is kept as in the file.
-/// Crossings between different rings are not detected.
+/// checked with exact predicates. Ring orientation is kept as in the file. A polygon inside
+/// another polygon's area (not in one of its holes) is an error, as OGC forbids overlapping
+/// polygons. Crossings between different rings are not detected here (the mesher's domain
+/// checks name them).
 ///
 /// Errors: one message `SOURCE:LINE: problem` in `*error`, `out` left empty. Never throws.
 template <class K>
