@@ -1204,7 +1204,7 @@ TEST(Buffer_layers, a_notch_that_cannot_move_is_filled)
   const std::size_t core_quads = core.quads.size();
   QM::internal::Buffer_layers<K> layers(core, std::vector<double>(core.points.size(), 4.0), d, loops, K());
   ASSERT_TRUE(layers.match_loops());
-  layers.apply_boundary_templates();
+  layers.apply_boundary_templates({});
   EXPECT_EQ(core.points[10], Point(2, 2)); // the centre cannot move
   layers.fill_notches();
   EXPECT_EQ(layers.report().filled_notches, 1u);

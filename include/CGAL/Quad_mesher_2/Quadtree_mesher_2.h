@@ -247,7 +247,7 @@ public:
     internal::Buffer_layers<GeomTraits> layers(mesh, m_core_vertex_size, m_domain, m_loops, m_traits);
     bool ok = layers.match_loops();
     if(ok && last >= Stage::TEMPLATES) {
-      layers.apply_boundary_templates();
+      layers.apply_boundary_templates(m_point_vertices);
       layers.fill_notches();
     }
     if(ok && last >= Stage::BUFFER1)

@@ -26,9 +26,16 @@
 //    the notches; last, a vertex within range moves either way if a neighbour is still out.
 //    On a 45° staircase the corners cut first leave 225° and 135°; notches opened first would
 //    flatten the corners between them, and every other notch stayed at 90°.
+//    On adaptive cores the bisector and the lattice's steps leave about 1% of the vertices out
+//    (quads that are not squares, transition templates' 45° corners): each vertex still out
+//    then searches the plane around it (a ring of points, then a pattern search) for where the
+//    three betas come nearest the range, and if its own is still out, the interior core
+//    vertices within two quads of it may give way (they move to keep their quads within
+//    [45°, 135°]). Not near an input corner: its buffer is the corner's (§5).
 //    A notch under 95° that still cannot move (a core angle of 45° at it) gets a new core quad
-//    over it, its fourth corner on the bisector, which leaves about the angles the move would
-//    have; not where the notch faces a corner that needs a fan of three (it is the fan's room).
+//    over it, its fourth corner on the bisector or, beside an adaptive core, searched for off
+//    it, which leaves about the angles the move would have; not where the notch faces a corner
+//    that needs a fan of three (it is the fan's room). The vertices around are searched again.
 // 3. First buffer layer (§4.5): B's first buffer point F lies halfway (in distance to the
 //    boundary) between B and the boundary, along the mean of the bisector of beta and the
 //    direction to the nearest boundary point; each F then moves alone to improve its two
@@ -471,16 +478,21 @@ public:
     return ok;
   }
 
-  /// Stage "templates": moves core boundary vertices so that their buffer-side angles meet
-  /// Lemma 2 where the core allows (see the file comment).
-  void apply_boundary_templates()
+  /// Stage "templates": moves core boundary vertices (and interior ones, but `fixed_points`,
+  /// a domain's isolated points) so that their buffer-side angles meet Lemma 2 where the core
+  /// allows (see the file comment).
+  void apply_boundary_templates(const std::vector<std::size_t>& fixed_points)
   {
     CGAL_precondition(m_quads_at != nullptr);
+    m_fixed.assign(m_mesh.points.size(), 0);
+    for(std::size_t v : fixed_points) if(v < m_fixed.size()) m_fixed[v] = 1;
+    m_shaped.assign(m_mesh.points.size(), 0);
     const Vertex_quads& quads_at = *m_quads_at;
     std::vector<char> adaptive(m_mesh.points.size(), 0);
     for(const auto& cyc : m_cycles)
       for(std::size_t b : cyc)
         adaptive[b] = !on_square_lattice(b, quads_at);
+    m_cleared_xy = m_xy;
     for(Template_pass pass : { ADAPTIVE, CORNERS, NOTCHES, NEIGHBOURS })
       for(int round = 0; round < 3; ++round) {
         bool changed = false;
@@ -494,16 +506,21 @@ public:
         }
         if(!changed) break;
       }
+    search_boundary_vertices(quads_at);
     m_quads_at.reset(); // the later stages add quads
   }
 
   /// Stage "templates", after apply_boundary_templates(): a new core quad over each notch that could not
-  /// move (see fill_notch()).
+  /// move (see fill_notch()), then the vertices about them searched again.
   void fill_notches()
   {
+    const std::size_t filled = m_report.filled_notches;
     for(std::size_t c = 0; c < m_cycles.size(); ++c)
       for(std::size_t i = 0; i < m_cycles[c].size(); ++i)
         fill_notch(c, i);
+    if(m_report.filled_notches > filled)
+      search_boundary_vertices(Vertex_quads(m_mesh.quads, m_mesh.points.size()));
+    m_cleared_xy = std::vector<Point_2d>();
   }
 
   /// Stage "buffer1": the first buffer points and the quads B_i F_i F_{i+1} B_{i+1}.
@@ -971,32 +988,48 @@ private:
          || (h.t >= 1 && needs_fan_of_three(h.loop, (h.edge + 1) % nv)))
         return;
     }
-    const double before = worst_buffer_angle_excess(m_xy[a2], m_xy[a], m_xy[b], m_xy[c1], m_xy[c2]);
+    // the worst first: a filled notch is off the boundary, and Y has its own angle (a
+    // lattice notch at 90 degrees beside a corner at 270 leaves two just out, far nearer)
+    auto excess = [&](const Point_2d& y) { return buffer_angle_excesses(m_xy[a2], m_xy[a], y, m_xy[c1], m_xy[c2], false); };
     const Point_2d d = right_bisector(m_xy[a], m_xy[b], m_xy[c1]);
     const double s = 0.5 * (length_2d(minus_2d(m_xy[a], m_xy[b])) + length_2d(minus_2d(m_xy[c1], m_xy[b])));
     const double clear = 0.25 * m_size[b];
     // a candidate must gain more than rounding: the choice is the same on a scaled domain
-    double best = before;
+    double best = excess(m_xy[b]);
     Point_2d best_y{ 0, 0 };
     bool found = false;
+    auto consider = [&](const Point_2d& y) {
+      const double after = excess(y);
+      if(!(after < best - angle_tolerance / 10) || quad_badness({ m_xy[b], m_xy[a], y, m_xy[c1] }) > 45.0 + core_slack
+         || !(m_locator->segment_distance(m_xy[a], y, clear) > clear) || !(m_locator->segment_distance(y, m_xy[c1], clear) > clear))
+        return false;
+      best = after;
+      best_y = y;
+      found = true;
+      return true;
+    };
     // |BY| = 1.01 s: at s (template 1(a)'s 0.71 s diagonal) a lattice notch's quad has exactly
     // 135 degrees at Y, in or out by rounding, and the runs of a scaled domain differed
-    for(double f : { 1.01, 1.1, 0.9, 1.2, 0.8 }) {
-      const Point_2d y{ m_xy[b].x + f * s * d.x, m_xy[b].y + f * s * d.y };
-      if(quad_badness({ m_xy[b], m_xy[a], y, m_xy[c1] }) > 45.0 + 1e-9) continue;
-      const double after = worst_buffer_angle_excess(m_xy[a2], m_xy[a], y, m_xy[c1], m_xy[c2]);
-      if(after < best - 1e-6 && m_locator->segment_distance(m_xy[a], y, clear) > clear
-         && m_locator->segment_distance(y, m_xy[c1], clear) > clear) {
-        best = after;
-        best_y = y;
-        found = true;
-      }
-    }
+    for(double f : { 1.01, 1.1, 0.9, 1.2, 0.8 })
+      consider(Point_2d{ m_xy[b].x + f * s * d.x, m_xy[b].y + f * s * d.y });
+    // Beside an adaptive core the quad's other corners are not a lattice notch's: Y then
+    // needs to lie off the bisector (a pattern search as for a vertex, search_boundary_vertex())
+    const double pi = 3.14159265358979323846;
+    if(!found)
+      for(double f : { 0.7, 0.85, 1.0, 1.15, 1.3 })
+        for(int k = -2; k <= 2; ++k) {
+          const double t = k * pi / 12, cs = std::cos(t), sn = std::sin(t);
+          consider(Point_2d{ m_xy[b].x + f * s * (cs * d.x - sn * d.y), m_xy[b].y + f * s * (sn * d.x + cs * d.y) });
+        }
     if(!found) return;
+    pattern_search(best_y, s, consider);
     // Y is a core point like the others (the first buffer points come after the core's)
     const std::size_t y = add_point(best_y);
     m_size.push_back(m_size[b]);
     m_on_cycle.push_back(1);
+    m_fixed.push_back(0);
+    m_shaped.push_back(0);
+    m_cleared_xy.push_back(best_y);
     m_on_cycle[b] = 0;
     m_core_points = m_mesh.points.size();
     add_quad({ b, a, y, c1 });
@@ -1069,6 +1102,9 @@ private:
   // The final check of the buffer quads is no looser than verify_mesh.py's range slack: a
   // quad passed here is one it passes.
   static constexpr double verifier_slack = 1e-7;
+  // How far the templates' searches let a core angle leave [45, 135]: rounding only, well
+  // below verifier_slack (nothing later need mend it).
+  static constexpr double core_slack = 1e-9;
 
   // for a sliding boundary point, moves `p` onto its edge strictly between its neighbours;
   // false if there is no room
@@ -1100,12 +1136,15 @@ private:
   // a core vertex the repair moves of optimize() moved
   bool repaired(std::size_t v) const { return v < m_repaired.size() && m_repaired[v] != 0; }
 
+  // an interior core vertex the templates moved (relax_interior())
+  bool shaped(std::size_t v) const { return v < m_shaped.size() && m_shaped[v] != 0; }
+
   // a quad the buffer stages made or changed: a vertex new, on the core boundary or moved by
-  // the repair (the other core quads keep their lattice angles, in [45, 135])
+  // the templates or the repair (the other core quads keep their lattice angles, in [45, 135])
   bool made_or_changed(const Quad& Q) const
   {
     for(std::size_t v : Q)
-      if(v >= m_core_points || on_cycle(v) || repaired(v)) return true;
+      if(v >= m_core_points || on_cycle(v) || repaired(v) || shaped(v)) return true;
     return false;
   }
 
@@ -1226,6 +1265,283 @@ private:
     m_mesh.points[b] = m_traits.construct_point_2_object()(FT(m_xy[b].x), FT(m_xy[b].y));
     ++(best_f > 0 ? m_report.moved_notches : m_report.cut_corners);
     return true;
+  }
+
+  // How far the buffer-side angles at a, b and c (consecutive on a core cycle between a2 and
+  // c2) lie outside [112.5, 225] widened by half the angle tolerance (what is within the
+  // tolerance counts as in), in one number, so that a search lowering it by more than rounding
+  // ends: how many are out first if `count_first` (a step of b that lets a neighbour out for a
+  // smaller worst one leaves more out), then the worst, then a tenth of their sum.
+  double buffer_angle_excesses(const Point_2d& a2, const Point_2d& a, const Point_2d& b,
+                               const Point_2d& c, const Point_2d& c2, bool count_first = true) const
+  {
+    double out = 0, worst = 0, sum = 0;
+    for(double beta : { right_side_angle(a2, a, b), right_side_angle(a, b, c), right_side_angle(b, c, c2) }) {
+      const double x = (std::max)(0.0, beta - (225.0 + angle_tolerance / 2))
+                       + (std::max)(0.0, (112.5 - angle_tolerance / 2) - beta);
+      out += x > 0 ? 1 : 0;
+      worst = (std::max)(worst, x);
+      sum += x;
+    }
+    return (count_first ? 1000.0 * out : 0.0) + worst + 0.1 * sum;
+  }
+
+  // true if core boundary vertex b (between a and c) may lie at p: every quad at it within
+  // [45, 135], none of its edges shorter than half what it was in the core the clearance left
+  // (angles alone let an edge shrink to nothing: naca0012's (0.872, 0.024) met its neighbour),
+  // its boundary edges h(b)/4 from the boundary
+  // (with `angles` false, all but the angles: the interior may still give way)
+  bool admissible_boundary_position(std::size_t a, std::size_t b, std::size_t c, const Point_2d& p,
+                                    const Vertex_quads& quads_at, bool angles = true)
+  {
+    const Point_2d old = m_xy[b];
+    m_xy[b] = p;
+    bool ok = true;
+    for(auto q = quads_at[b].begin(); ok && q != quads_at[b].end(); ++q) {
+      const Quad& Q = m_mesh.quads[*q];
+      if(angles) {
+        std::array<Point_2d, 4> P;
+        for(int k = 0; k < 4; ++k) P[k] = m_xy[Q[k]];
+        ok = quad_badness(P) <= 45.0 + core_slack;
+      }
+      int k = 0;
+      while(Q[k] != b) ++k;
+      for(int side : { 1, 3 }) {
+        const std::size_t w = Q[(k + side) % 4];
+        ok = ok && length_2d(minus_2d(m_xy[w], p)) >= 0.5 * length_2d(minus_2d(m_cleared_xy[w], m_cleared_xy[b]));
+      }
+    }
+    m_xy[b] = old;
+    const double clear = 0.25 * m_size[b];
+    return ok && m_locator->segment_distance(m_xy[a], p, clear) > clear
+           && m_locator->segment_distance(p, m_xy[c], clear) > clear;
+  }
+
+  // A core boundary vertex b still out of [112.5, 225] after the bisector steps (a2, a, b, c,
+  // c2 consecutive on its cycle): on adaptive cores its quads are not the lattice's, and the
+  // step its buffer-side angle needs is neither along the bisector nor one of the lattice's.
+  // The best admissible point of a ring around b (12 directions, 6 distances), then a pattern
+  // search from it (16 directions, halving the step), lowers the excesses at a, b and c.
+  // If b's own angle is still out, the core around it may give way: b goes to a point of the
+  // ring that would bring it in, and the interior core vertices within two quads of it move to
+  // keep their quads within [45, 135] (relax_interior()); the first point where they can is
+  // kept, and searched from again. (A transition template's 45-degree corner at b, which b
+  // alone cannot open, opens as its diagonal's other end moves.)
+  bool search_boundary_vertex(std::size_t a2, std::size_t a, std::size_t b, std::size_t c, std::size_t c2,
+                              const Vertex_quads& quads_at)
+  {
+    const Point_2d old = m_xy[b];
+    auto excess = [&](const Point_2d& p) { return buffer_angle_excesses(m_xy[a2], m_xy[a], p, m_xy[c], m_xy[c2]); };
+    double best = excess(old);
+    if(best == 0 || buffer_angle_excess(right_side_angle(m_xy[a], old, m_xy[c])) <= angle_tolerance
+       || near_input_corner(b))
+      return false;
+    const double e = 0.5 * (length_2d(minus_2d(old, m_xy[a])) + length_2d(minus_2d(m_xy[c], old)));
+    const double pi = 3.14159265358979323846;
+    auto ring = [&](double r, int k) {
+      return Point_2d{ old.x + r * e * std::cos(k * pi / 6), old.y + r * e * std::sin(k * pi / 6) };
+    };
+    Point_2d best_p = old;
+    auto consider = [&](const Point_2d& p) {
+      const double x = excess(p);
+      if(!(x < best - angle_tolerance / 10) || !admissible_boundary_position(a, b, c, p, quads_at)) return false;
+      best = x;
+      best_p = p;
+      return true;
+    };
+    for(double r : { 0.05, 0.1, 0.2, 0.3, 0.45, 0.6 })
+      for(int k = 0; k < 12; ++k)
+        consider(ring(r, k));
+    pattern_search(best_p, e, consider);
+    bool reshaped = false;
+    if(buffer_angle_excess(right_side_angle(m_xy[a], best_p, m_xy[c])) > angle_tolerance) {
+      std::vector<std::pair<double, Point_2d>> targets; // in order of distance
+      for(double r : { 0.1, 0.2, 0.3, 0.45 })
+        for(int k = 0; k < 12; ++k) {
+          const Point_2d p = ring(r, k);
+          const double x = excess(p);
+          if(x < best - angle_tolerance / 10
+             && buffer_angle_excess(right_side_angle(m_xy[a], p, m_xy[c])) <= angle_tolerance)
+            targets.emplace_back(x, p);
+        }
+      std::stable_sort(targets.begin(), targets.end(),
+                       [](const auto& x, const auto& y) { return x.first < y.first; });
+      const std::vector<std::size_t> around = interior_around(b, quads_at);
+      for(std::size_t t = 0; t < targets.size() && t < 6 && !reshaped; ++t) {
+        m_xy[b] = targets[t].second;
+        reshaped = admissible_boundary_position(a, b, c, targets[t].second, quads_at, false)
+                   && relax_interior(around, b, quads_at);
+        if(reshaped) {
+          best = targets[t].first;
+          best_p = targets[t].second;
+          pattern_search(best_p, e, consider);
+        }
+        m_xy[b] = old;
+      }
+    }
+    if(best_p.x == old.x && best_p.y == old.y) return false;
+    m_xy[b] = best_p;
+    m_mesh.points[b] = m_traits.construct_point_2_object()(FT(best_p.x), FT(best_p.y));
+    return true;
+  }
+
+  // A pattern search in the plane about `at`, the best point so far, which `consider(p)`
+  // replaces by p if p is better (and then returns true): 16 directions at a step from a
+  // twentieth of `scale` down to 1e-10 of it, doubled after a move and halved after none. At
+  // most 400 tries of the 16: along a ridge of the angles' maximum the moves can be tiny and
+  // many.
+  template <class Consider>
+  static void pattern_search(const Point_2d& at, double scale, const Consider& consider)
+  {
+    const double pi = 3.14159265358979323846;
+    double step = 0.05 * scale;
+    for(int i = 0; i < 400 && step > 1e-10 * scale; ++i) {
+      const Point_2d from = at;
+      bool moved = false;
+      for(int k = 0; k < 16; ++k)
+        moved = consider(Point_2d{ from.x + step * std::cos(k * pi / 8), from.y + step * std::sin(k * pi / 8) }) || moved;
+      step = moved ? (std::min)(2 * step, 0.05 * scale) : step / 2;
+    }
+  }
+
+  // true if an input corner (a loop vertex turning by the feature angle or more) at an end of
+  // the boundary edge nearest core vertex b lies within 2 h(b) of it: its buffer is the
+  // corner's (§5), not Lemma 2's (bird_mx's 1.13, -6.79 moved off the lattice beside the tip
+  // left a first-layer quad inverted)
+  bool near_input_corner(std::size_t b) const
+  {
+    const Loop_locator::Hit h = m_locator->closest(m_xy[b], 2 * m_size[b]);
+    if(!(h.dist < 2 * m_size[b])) return false;
+    const std::size_t nv = m_locator->loop(h.loop).size();
+    for(std::size_t k : { h.edge, (h.edge + 1) % nv })
+      if(is_feature(h.loop, k) && length_2d(minus_2d(m_locator->loop(h.loop)[k], m_xy[b])) < 2 * m_size[b])
+        return true;
+    return false;
+  }
+
+  // search_boundary_vertex() on every core boundary vertex, in rounds while one moves
+  void search_boundary_vertices(const Vertex_quads& quads_at)
+  {
+    for(int round = 0; round < 3; ++round) {
+      bool changed = false;
+      for(const auto& cyc : m_cycles) {
+        const std::size_t n = cyc.size();
+        for(std::size_t i = 0; i < n; ++i)
+          if(search_boundary_vertex(cyc[(i + n - 2) % n], cyc[(i + n - 1) % n], cyc[i],
+                                    cyc[(i + 1) % n], cyc[(i + 2) % n], quads_at))
+            changed = true;
+      }
+      if(!changed) break;
+    }
+  }
+
+  // the interior core vertices (not on a cycle, not the domain's isolated points) of the quads
+  // at b and of the quads at those
+  std::vector<std::size_t> interior_around(std::size_t b, const Vertex_quads& quads_at) const
+  {
+    std::vector<std::size_t> near{ b }, out;
+    for(int ring = 0; ring < 2; ++ring) {
+      std::vector<std::size_t> next;
+      for(std::size_t u : near)
+        for(std::size_t q : quads_at[u])
+          for(std::size_t w : m_mesh.quads[q])
+            if(!on_cycle(w) && !m_fixed[w]) next.push_back(w);
+      std::sort(next.begin(), next.end());
+      next.erase(std::unique(next.begin(), next.end()), next.end());
+      out.insert(out.end(), next.begin(), next.end());
+      near = std::move(next);
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+  }
+
+  // the largest deviation from 90 degrees of the quads at v
+  double worst_badness_at(std::size_t v, const Vertex_quads& quads_at) const
+  {
+    double worst = 0;
+    for(std::size_t q : quads_at[v]) {
+      std::array<Point_2d, 4> P;
+      for(int k = 0; k < 4; ++k) P[k] = m_xy[m_mesh.quads[q][k]];
+      worst = (std::max)(worst, quad_badness(P));
+    }
+    return worst;
+  }
+
+  // With core boundary vertex b moved, the interior vertices `around` it move one at a time,
+  // those with a quad outside [45, 135], each to the target (as in optimize()) that most lowers
+  // the worst deviation from 90 degrees of its quads, none of its edges shorter than half what
+  // it was. True, and the moves kept (exactly in the kernel), if then every quad at b and at
+  // them is within [45, 135]; otherwise they are undone.
+  bool relax_interior(const std::vector<std::size_t>& around, std::size_t b, const Vertex_quads& quads_at)
+  {
+    std::vector<Point_2d> before(around.size());
+    for(std::size_t k = 0; k < around.size(); ++k) before[k] = m_xy[around[k]];
+    auto short_edge = [&](std::size_t v) {
+      for(std::size_t q : quads_at[v]) {
+        const Quad& Q = m_mesh.quads[q];
+        int c = 0;
+        while(Q[c] != v) ++c;
+        for(int side : { 1, 3 }) {
+          const std::size_t w = Q[(c + side) % 4];
+          if(length_2d(minus_2d(m_xy[w], m_xy[v])) < 0.5 * length_2d(minus_2d(m_cleared_xy[w], m_cleared_xy[v])))
+            return true;
+        }
+      }
+      return false;
+    };
+    std::vector<Point_2d> targets;
+    for(int pass = 0; pass < 8; ++pass) {
+      bool moved = false;
+      for(std::size_t v : around) {
+        const double current = worst_badness_at(v, quads_at);
+        if(current <= 45.0) continue;
+        const Point_2d old = m_xy[v];
+        targets.clear();
+        Point_2d lap{ 0, 0 }, mean{ 0, 0 };
+        for(std::size_t q : quads_at[v]) {
+          const Quad& Q = m_mesh.quads[q];
+          int c = 0;
+          while(Q[c] != v) ++c;
+          const Point_2d& prev = m_xy[Q[(c + 3) % 4]];
+          const Point_2d& next = m_xy[Q[(c + 1) % 4]];
+          const Point_2d& opp = m_xy[Q[(c + 2) % 4]];
+          targets.push_back(Point_2d{ prev.x + next.x - opp.x, prev.y + next.y - opp.y });
+          mean.x += targets.back().x; mean.y += targets.back().y;
+          lap.x += prev.x + next.x; lap.y += prev.y + next.y;
+        }
+        const double nq = double(quads_at[v].size());
+        targets.push_back(Point_2d{ mean.x / nq, mean.y / nq });
+        targets.push_back(Point_2d{ lap.x / (2 * nq), lap.y / (2 * nq) });
+        double best = current;
+        Point_2d best_p = old;
+        for(const Point_2d& t : targets)
+          for(double step : { 1.0, 0.5, 0.25, 0.1 }) {
+            m_xy[v] = Point_2d{ old.x + step * (t.x - old.x), old.y + step * (t.y - old.y) };
+            const double w = worst_badness_at(v, quads_at);
+            if(w < best - angle_tolerance && !short_edge(v)) {
+              best = w;
+              best_p = m_xy[v];
+            }
+          }
+        m_xy[v] = best_p;
+        moved = moved || best < current;
+      }
+      if(!moved) break;
+    }
+    bool ok = worst_badness_at(b, quads_at) <= 45.0 + core_slack;
+    for(std::size_t v : around) ok = ok && worst_badness_at(v, quads_at) <= 45.0 + core_slack;
+    for(std::size_t k = 0; k < around.size(); ++k) {
+      const std::size_t v = around[k];
+      if(m_xy[v].x == before[k].x && m_xy[v].y == before[k].y) continue;
+      if(ok) {
+        m_mesh.points[v] = m_traits.construct_point_2_object()(FT(m_xy[v].x), FT(m_xy[v].y));
+        m_shaped[v] = 1;
+      } else {
+        m_xy[v] = before[k];
+      }
+    }
+    return ok;
   }
 
   // Triangles of the strip, in order around the loop: an F edge with its apex on G, or a G
@@ -2260,6 +2576,7 @@ private:
   // the quads at each vertex from match_loops() to apply_boundary_templates(), which add none
   std::unique_ptr<Vertex_quads> m_quads_at;
   std::vector<Point_2d> m_xy;
+  std::vector<Point_2d> m_cleared_xy; // m_xy before apply_boundary_templates(), until fill_notches()
   std::vector<std::vector<std::size_t>> m_cycles;
   std::vector<std::size_t> m_cycle_loop;
   std::vector<std::vector<Point_2d>> m_first;
@@ -2270,6 +2587,8 @@ private:
   std::unordered_map<std::size_t, Slide> m_slide;
   std::vector<char> m_on_cycle; // per core point
   std::vector<char> m_repaired; // per point
+  std::vector<char> m_fixed;    // per core point: a domain's isolated point, which never moves
+  std::vector<char> m_shaped;   // per core point: an interior one the templates moved
   struct Quad_hash
   {
     std::size_t operator()(const Quad& q) const
