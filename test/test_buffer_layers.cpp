@@ -1079,13 +1079,14 @@ double boundary_edge_angle(const Domain& d, const Loops& loops, const P2d& a, co
   return angle;
 }
 
-// Lemma 2 (§4.4) on what the templates stage returns, where the paper proves it (cores uniform
+// Lemma 2 (§4.4) on what the templates stage returns (on adaptive cores at most `max_outside`
+// buffer-side angles out), where the paper proves it (cores uniform
 // along the boundary): every core angle in [45, 135], every buffer-side angle of the core
 // boundary in [112.5, 225], every boundary edge angle in [-90, 90]. Opening the notches alone
 // (before the corner cuts) left 8, 19 and 27 buffer-side angles out on these three, mostly
 // 90-degree notches on 45-degree staircases: every other notch there cannot open without
 // flattening the corners beside it.
-void check_lemma_2(const Domain& d, const std::string& name)
+void check_lemma_2(const Domain& d, const std::string& name, std::size_t max_outside = 0)
 {
   SCOPED_TRACE(name);
   Mesher mesher(d);
@@ -1101,7 +1102,7 @@ void check_lemma_2(const Domain& d, const std::string& name)
     return n;
   };
   const std::size_t before = outside(clearance), after = outside(templates);
-  EXPECT_EQ(after, 0u) << "buffer-side angles outside [112.5, 225]";
+  EXPECT_LE(after, max_outside) << "buffer-side angles outside [112.5, 225]";
   const Loops loops = QM::extract_loops(d);
   double worst_edge_angle = 0;
   for(const auto& e : boundary_edges(templates.quads)) {
@@ -1122,6 +1123,114 @@ TEST(Buffer_layers, templates_meet_lemma_2_on_uniform_cores)
   check_lemma_2(polygons({ rectangle(0, 0, 1, 1), turned_square(0.5, 0.5, 0.25, 30) }, { Point(0.5, 0.5) }),
                 "square, island 30");
   check_lemma_2(polygons({ wavy_blob() }), "wavy blob");
+}
+
+// Adaptive cores (../shared/data, skipped when absent): the bisector steps and the lattice's
+// left 18 of Lake Superior's 2310 buffer-side angles out and 16 of the guitar's 1110 (quads
+// that are not squares, transition templates' 45-degree corners); the plane searches, the core
+// giving way and the filled notches searched off the bisector leave 8 and 6, most beside the
+// domain's sharp corners or spikes (§5, not Lemma 2) or notches whose core angles are all 45
+// degrees with no room to fill them. (Not the bird: a boundary edge at its tail's sharp
+// corner is at 106 degrees to the boundary, as before.)
+TEST(Buffer_layers, templates_nearly_meet_lemma_2_on_adaptive_cores)
+{
+  for(const auto& [name, max_outside] : { std::make_pair(std::string("lake_superior/lake_superior.poly"), std::size_t(10)),
+                                          std::make_pair(std::string("guitar/guitar.poly"), std::size_t(8)) }) {
+    if(!std::ifstream(std::string(QM2_SHARED_DATA_DIR) + "/" + name))
+      GTEST_SKIP() << "no " << name << " in the shared data";
+    check_lemma_2(load(name), name, max_outside);
+  }
+}
+
+// the buffer-side angles of `core`'s boundary within [112.5, 225], its core angles within
+// [45, 135]
+void expect_lemma_2_angles(const Mesh& core)
+{
+  for(double a : buffer_side_angles(core)) {
+    EXPECT_GE(a, 112.5 - 1e-6);
+    EXPECT_LE(a, 225.0 + 1e-6);
+  }
+  const auto range = qm2_checks::angle_range(core);
+  EXPECT_GE(range.min, 45 - 1e-9);
+  EXPECT_LE(range.max, 135 + 1e-9);
+}
+
+// A 3 x 3 block of 2 x 1 rectangles: each corner of the block is a convex corner whose one
+// quad is not a square. The bisector steps of template 1(b) stop it at 125.7 degrees (234.3
+// on the buffer side: 0.3 e cuts too little, 0.41 e too much), the plane search off the
+// bisector at 135.
+TEST(Buffer_layers, templates_search_the_plane_where_the_bisector_steps_fail)
+{
+  Mesh core;
+  for(int i = 0; i <= 3; ++i)
+    for(int j = 0; j <= 3; ++j) core.points.emplace_back(2 * i, j);
+  for(std::size_t i = 0; i < 3; ++i)
+    for(std::size_t j = 0; j < 3; ++j)
+      core.quads.push_back({ 4 * i + j, 4 * (i + 1) + j, 4 * (i + 1) + j + 1, 4 * i + j + 1 });
+  const Domain d = polygons({ disc(3, 1.5, 6, 64) });
+  const Loops loops = QM::extract_loops(d);
+  QM::internal::Buffer_layers<K> layers(core, std::vector<double>(core.points.size(), 2.0), d, loops, K());
+  ASSERT_TRUE(layers.match_loops());
+  layers.apply_boundary_templates({});
+  expect_lemma_2_angles(core);
+}
+
+// A transition template (the cell [0, 2]^2 with its upper and left sides split: the quads
+// B (2, 0), (2, 2), (1, 2), M and B, M, (0, 1), (0, 0), M = (1, 1) the cell's centre) at the
+// core's notch B, beside coarse cells on its right: B's two 45-degree corners keep its core
+// angles at 270 wherever B alone goes. With M giving way B leaves the notch; with M fixed
+// (a domain's isolated point) it cannot.
+Mesh notch_at_a_transition_template()
+{
+  Mesh m;
+  const std::vector<std::array<double, 2>> xy{ { 2, 0 }, { 2, 2 }, { 1, 2 }, { 1, 1 }, { 0, 1 }, { 0, 0 },
+                                               { 0, 2 }, { 0, 3 }, { 1, 3 }, { 2, 3 }, { -1, 0 }, { -1, 1 },
+                                               { -1, 2 }, { -1, 3 }, { 4, 0 }, { 4, 2 }, { 2, -2 }, { 4, -2 } };
+  for(const auto& p : xy) m.points.emplace_back(p[0], p[1]);
+  auto at = [&](double x, double y) {
+    for(std::size_t v = 0; v < xy.size(); ++v)
+      if(xy[v][0] == x && xy[v][1] == y) return v;
+    return std::size_t(-1);
+  };
+  m.quads = { { at(2, 0), at(2, 2), at(1, 2), at(1, 1) },    { at(2, 0), at(1, 1), at(0, 1), at(0, 0) },
+              { at(1, 1), at(1, 2), at(0, 2), at(0, 1) },    { at(0, 2), at(1, 2), at(1, 3), at(0, 3) },
+              { at(1, 2), at(2, 2), at(2, 3), at(1, 3) },    { at(-1, 0), at(0, 0), at(0, 1), at(-1, 1) },
+              { at(-1, 1), at(0, 1), at(0, 2), at(-1, 2) }, { at(-1, 2), at(0, 2), at(0, 3), at(-1, 3) },
+              { at(2, 0), at(4, 0), at(4, 2), at(2, 2) },    { at(2, -2), at(4, -2), at(4, 0), at(2, 0) } };
+  return m;
+}
+
+TEST(Buffer_layers, the_core_gives_way_at_a_transition_templates_notch)
+{
+  const Domain d = polygons({ disc(1.5, 0.5, 5, 64) });
+  const Loops loops = QM::extract_loops(d);
+  for(bool fixed : { false, true }) {
+    SCOPED_TRACE(fixed ? "M fixed" : "M free");
+    Mesh core = notch_at_a_transition_template();
+    const std::size_t B = 0, M = 3;
+    QM::internal::Buffer_layers<K> layers(core, std::vector<double>(core.points.size(), 2.0), d, loops, K());
+    ASSERT_TRUE(layers.match_loops());
+    layers.apply_boundary_templates(fixed ? std::vector<std::size_t>{ M } : std::vector<std::size_t>{});
+    const auto cycles = QM::internal::mesh_boundary_cycles(core.quads, core.points.size());
+    ASSERT_EQ(cycles.size(), 1u);
+    const auto& c = cycles[0];
+    const std::size_t i = std::size_t(std::find(c.begin(), c.end(), B) - c.begin()), n = c.size();
+    ASSERT_LT(i, n);
+    const double beta = QM::internal::right_side_angle(QM::internal::to_point_2d(core.points[c[(i + n - 1) % n]]),
+                                                       QM::internal::to_point_2d(core.points[B]),
+                                                       QM::internal::to_point_2d(core.points[c[(i + 1) % n]]));
+    if(fixed) {
+      EXPECT_EQ(core.points[M], Point(1, 1));
+      EXPECT_LT(beta, 112.5);
+    } else {
+      EXPECT_NE(core.points[M], Point(1, 1));
+      EXPECT_GE(beta, 112.5 - 1e-6);
+      EXPECT_LE(beta, 225.0 + 1e-6);
+    }
+    const auto range = qm2_checks::angle_range(core);
+    EXPECT_GE(range.min, 45 - 1e-9);
+    EXPECT_LE(range.max, 135 + 1e-9);
+  }
 }
 
 TEST(Buffer_layers, stages_on_the_disc)
@@ -1209,11 +1318,8 @@ TEST(Buffer_layers, a_notch_that_cannot_move_is_filled)
   layers.fill_notches();
   EXPECT_EQ(layers.report().filled_notches, 1u);
   EXPECT_EQ(core.quads.size(), core_quads + 1);
-  for(double a : buffer_side_angles(core)) // near [112.5, 225], but the square corners' 270
-    if(std::abs(a - 270) > 1e-9) {
-      EXPECT_GE(a, 110.0);
-      EXPECT_LE(a, 230.0);
-    }
+  // Y searched off the bisector and the vertices around it again: on it Y kept 226.4 degrees
+  expect_lemma_2_angles(core);
   layers.build_first_layer();
   layers.build_second_layer();
   layers.optimize({});
