@@ -204,6 +204,8 @@ int run(const Options& opt)
                          { "notches_moved", b.moved_notches },
                          { "corners_cut", b.cut_corners },
                          { "notches_filled", b.filled_notches },
+                         { "vertices_searched", b.searched_vertices },
+                         { "interior_vertices_moved", b.shaped_interior },
                          { "first_layer_quads", b.first_layer_quads },
                          { "second_layer_quads", b.second_layer_quads },
                          { "quads_outside_45_135_not_forced", b.bad_angle_quads } };

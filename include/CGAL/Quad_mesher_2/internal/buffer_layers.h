@@ -384,6 +384,10 @@ struct Buffer_report
   std::size_t moved_notches = 0;
   std::size_t cut_corners = 0;
   std::size_t filled_notches = 0;
+  /// core boundary vertices moved by the plane search, and interior core vertices moved to
+  /// give them room
+  std::size_t searched_vertices = 0;
+  std::size_t shaped_interior = 0;
   std::size_t first_layer_quads = 0;
   std::size_t second_layer_quads = 0;
   std::size_t invalid_quads = 0;
@@ -1382,6 +1386,7 @@ private:
     if(best_p.x == old.x && best_p.y == old.y) return false;
     m_xy[b] = best_p;
     m_mesh.points[b] = m_traits.construct_point_2_object()(FT(best_p.x), FT(best_p.y));
+    ++m_report.searched_vertices;
     return true;
   }
 
@@ -1536,6 +1541,7 @@ private:
       if(m_xy[v].x == before[k].x && m_xy[v].y == before[k].y) continue;
       if(ok) {
         m_mesh.points[v] = m_traits.construct_point_2_object()(FT(m_xy[v].x), FT(m_xy[v].y));
+        m_report.shaped_interior += m_shaped[v] == 0 ? 1 : 0;
         m_shaped[v] = 1;
       } else {
         m_xy[v] = before[k];
