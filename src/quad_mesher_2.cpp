@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -29,6 +30,9 @@
 namespace QM = CGAL::Quad_mesher_2;
 
 namespace {
+
+// 2^40 cells: about 120 TB of quadtree, far beyond any machine, well within 64 bits
+constexpr unsigned long long max_cell_budget = 1ULL << 40;
 
 struct Options
 {
@@ -308,10 +312,23 @@ int main(int argc, char** argv)
   app.add_option("--max-depth", opt.max_depth,
                  "deepest quadtree level; a sizing that needs more is an error")
     ->check(CLI::Range(0, QM::Mesh_criteria_2<CGAL::Epick>::max_supported_depth));
+  // a whole number of cells (CLI's own check printed the largest double's 310 digits for 0,
+  // and took 1e20, beyond 64 bits, without a word)
+  const CLI::Validator cell_budget(
+    [](std::string& text) -> std::string {
+      errno = 0;
+      char* end = nullptr;
+      const unsigned long long v = std::strtoull(text.c_str(), &end, 10);
+      if(end == text.c_str() || *end != '\0' || text.find('-') != std::string::npos || errno == ERANGE || v < 1
+         || v > max_cell_budget)
+        return "must be a whole number from 1 to " + std::to_string(max_cell_budget) + ", not '" + text + "'";
+      return std::string();
+    },
+    "1.." + std::to_string(max_cell_budget));
   app.add_option("--max-cells", opt.max_cells,
                  "the cell budget: most quadtree cells to make before stopping with an error (a memory guard: "
                  "the quadtree takes about 110 bytes a cell)")
-    ->check(CLI::PositiveNumber);
+    ->check(cell_budget);
   app.add_flag("-v,--verbose", opt.verbose, "print what each stage did and its time");
   try {
     app.parse(argc, argv);

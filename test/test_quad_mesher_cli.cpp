@@ -171,6 +171,11 @@ TEST(quad_mesher_cli, usage_errors)
     EXPECT_EQ(r.status, 2) << size;
     EXPECT_LT(r.err.size(), 400u) << r.err; // no 310-digit range
   }
+  for(const char* cells : { "0", "-5", "1e6", "99999999999999999999" }) { // 1e20 was taken silently
+    const Cli_run r = run(lake + " -o " + m.string() + " --max-cells " + cells);
+    EXPECT_EQ(r.status, 2) << cells;
+    EXPECT_NE(r.err.find("must be a whole number from 1 to"), std::string::npos) << r.err;
+  }
   EXPECT_EQ(run(lake + " -o " + m.string() + " --no-such-option").status, 2);
   EXPECT_EQ(run("-o " + m.string()).status, 2); // no input
 }

@@ -758,6 +758,27 @@ public:
   /// vertex and keeps them convex and unfolded. Then, around each quad still outside
   /// [45°, 135°], the core vertices within two quads of it may move too. Input vertices and
   /// `fixed_points` (a domain's isolated points) never move.
+  // `targets`: for each quad at v, where v would make it a parallelogram (the corners beside v
+  // plus one side); returns the mean of those corners, v's neighbours (a Laplacian step)
+  Point_2d parallelogram_targets(std::size_t v, const Vertex_quads& quads_at, std::vector<Point_2d>& targets) const
+  {
+    targets.clear();
+    Point_2d lap{0, 0};
+    for(std::size_t q : quads_at[v]) {
+      const Quad& Q = m_mesh.quads[q];
+      int c = 0;
+      while(Q[c] != v) ++c;
+      const Point_2d& prev = m_xy[Q[(c + 3) % 4]];
+      const Point_2d& next = m_xy[Q[(c + 1) % 4]];
+      const Point_2d& opp = m_xy[Q[(c + 2) % 4]];
+      targets.push_back(Point_2d{prev.x + next.x - opp.x, prev.y + next.y - opp.y});
+      lap.x += prev.x + next.x; lap.y += prev.y + next.y;
+    }
+    const int corners = 2 * int(quads_at[v].size());
+    lap.x /= corners; lap.y /= corners;
+    return lap;
+  }
+
   void optimize(const std::vector<std::size_t>& fixed_points, int passes = 12)
   {
     const Vertex_quads quads_at(m_mesh.quads, m_mesh.points.size());
@@ -836,21 +857,7 @@ public:
           const Local current = local_cost(v, nullptr);
           if(current.worst <= 30.0) continue; // within [60, 120]: good enough
           const Point_2d old = m_xy[v];
-          targets.clear();
-          Point_2d lap{0, 0};
-          int nl = 0;
-          for(std::size_t q : quads_at[v]) {
-            const Quad& Q = m_mesh.quads[q];
-            int c = 0;
-            while(Q[c] != v) ++c;
-            const Point_2d& prev = m_xy[Q[(c + 3) % 4]];
-            const Point_2d& next = m_xy[Q[(c + 1) % 4]];
-            const Point_2d& opp = m_xy[Q[(c + 2) % 4]];
-            targets.push_back(Point_2d{prev.x + next.x - opp.x, prev.y + next.y - opp.y});
-            lap.x += prev.x + next.x; lap.y += prev.y + next.y; nl += 2;
-          }
-          lap.x /= nl; lap.y /= nl;
-          targets.push_back(lap);
+          targets.push_back(parallelogram_targets(v, quads_at, targets));
           add_turns_about_corners(v, quads_at, targets);
           Point_2d mean{0, 0};
           for(std::size_t k = 0; k + 1 < targets.size(); ++k) { mean.x += targets[k].x; mean.y += targets[k].y; }
@@ -1502,22 +1509,12 @@ private:
         const double current = worst_badness_at(v, quads_at);
         if(current <= 45.0) continue;
         const Point_2d old = m_xy[v];
-        targets.clear();
-        Point_2d lap{ 0, 0 }, mean{ 0, 0 };
-        for(std::size_t q : quads_at[v]) {
-          const Quad& Q = m_mesh.quads[q];
-          int c = 0;
-          while(Q[c] != v) ++c;
-          const Point_2d& prev = m_xy[Q[(c + 3) % 4]];
-          const Point_2d& next = m_xy[Q[(c + 1) % 4]];
-          const Point_2d& opp = m_xy[Q[(c + 2) % 4]];
-          targets.push_back(Point_2d{ prev.x + next.x - opp.x, prev.y + next.y - opp.y });
-          mean.x += targets.back().x; mean.y += targets.back().y;
-          lap.x += prev.x + next.x; lap.y += prev.y + next.y;
-        }
-        const double nq = double(quads_at[v].size());
+        const Point_2d lap = parallelogram_targets(v, quads_at, targets);
+        Point_2d mean{ 0, 0 };
+        for(const Point_2d& t : targets) { mean.x += t.x; mean.y += t.y; }
+        const double nq = double(targets.size());
         targets.push_back(Point_2d{ mean.x / nq, mean.y / nq });
-        targets.push_back(Point_2d{ lap.x / (2 * nq), lap.y / (2 * nq) });
+        targets.push_back(lap);
         double best = current;
         Point_2d best_p = old;
         for(const Point_2d& t : targets)
