@@ -841,6 +841,22 @@ TEST(Buffer_layers, a_reflex_tip_after_a_straight_coast_gets_a_fan_of_three)
   EXPECT_EQ(angles_at(m, *tip).size(), 3u);
 }
 
+// A unit square with 64 square holes [i/8 + 1/32, i/8 + 3/32]^2: corners of 90 and 270
+// degrees only, on the quadtree's lattice. Seven 270-degree hole corners kept a fan of two
+// (134.8 and 135.2 degrees) round after round: a corner of exactly 270 (to rounding) was not
+// yet one that a fan of two leaves out of range (a reviewer's find).
+TEST(Buffer_layers, a_grid_of_square_holes_meets_45_135)
+{
+  std::vector<std::vector<Point>> loops{ rectangle(0, 0, 1, 1) };
+  std::vector<Point> seeds;
+  for(int i = 0; i < 8; ++i)
+    for(int j = 0; j < 8; ++j) {
+      loops.push_back(rectangle(i / 8.0 + 1 / 32.0, j / 8.0 + 1 / 32.0, i / 8.0 + 3 / 32.0, j / 8.0 + 3 / 32.0));
+      seeds.emplace_back(i / 8.0 + 1 / 16.0, j / 8.0 + 1 / 16.0);
+    }
+  expect_angles_45_135(mesh_and_check(polygons(loops, seeds), "64 square holes"), "64 square holes");
+}
+
 TEST(Buffer_layers, dumbbell_with_a_narrow_channel_meets_45_135)
 {
   expect_angles_45_135(mesh_and_check(polygons({ dumbbell() }, {}), "dumbbell"), "dumbbell");

@@ -1631,16 +1631,17 @@ private:
     return -1;
   }
 
-  // the corner (0 to 3) of q with over 135 degrees at an input corner over 270 degrees,
-  // between a boundary node and an F point, or -1: a side of a fan of two there, or of a fan
-  // of three with an F point off to one side. A fan of two at such a corner keeps over 135 degrees in one of its quads
+  // the corner (0 to 3) of q with over 135 degrees at an input corner of 270 degrees or more
+  // (270 to rounding: a grid of square holes kept fans of 134.8 + 135.2 at theirs), between a
+  // boundary node and an F point, or -1: a side of a fan of two there, or of a fan of three
+  // with an F point off to one side. A fan of two at such a corner keeps over 135 degrees in one of its quads
   // however its F point moves (the pairing took two quads of about 147 degrees at a 294-degree
   // island tip over a fan of three whose middle F point, flat for now, the optimizer moves).
   int wide_side_of_reflex_fan(const Quad& q) const
   {
     for(int k = 0; k < 4; ++k) {
       const std::size_t v = q[k], u = q[(k + 3) % 4], w = q[(k + 1) % 4];
-      if(!(input_corner_angle(v) > 270.0) || on_boundary_chain(u) == on_boundary_chain(w)) continue;
+      if(!(input_corner_angle(v) > 270.0 - angle_tolerance) || on_boundary_chain(u) == on_boundary_chain(w)) continue;
       if(corner_angle_degrees(m_xy[u], m_xy[v], m_xy[w]) > 135.0 + angle_tolerance) return k;
     }
     return -1;
@@ -2508,11 +2509,12 @@ private:
   // triangles, hence a fan of three in either phase (bahamas_islands' 281-degree corner at
   // (-77.94317, 24.33101) kept a fan of two, 146 degrees, round after round). Spaced alpha/5
   // apart, they give the corner alpha/5, 2 alpha/5 and 2 alpha/5 either way: within 135
-  // degrees up to a corner of 337.5; from 225 to 270 a fan of two fits.
+  // degrees up to a corner of 337.5; below 270 a fan of two fits (at 270 only as 135 + 135
+  // exactly, so 270 to rounding is taken too).
   bool may_take_four_fan_points(std::size_t l, std::size_t k) const
   {
     const double alpha = domain_angle(l, k);
-    return alpha > 270.0 && alpha <= 337.5;
+    return alpha > 270.0 - angle_tolerance && alpha <= 337.5;
   }
 
   // a loop vertex the mesh must keep: it turns the boundary by the feature angle or more
