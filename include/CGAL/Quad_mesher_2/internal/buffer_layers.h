@@ -1319,7 +1319,7 @@ private:
       while(Q[k] != b) ++k;
       for(int side : { 1, 3 }) {
         const std::size_t w = Q[(k + side) % 4];
-        ok = ok && length_2d(minus_2d(m_xy[w], p)) >= 0.5 * length_2d(minus_2d(m_cleared_xy[w], m_cleared_xy[b]));
+        ok = ok && keeps_half_length(b, w, p);
       }
     }
     m_xy[b] = old;
@@ -1469,6 +1469,12 @@ private:
   }
 
   // the largest deviation from 90 degrees of the quads at v
+  // whether edge v-w, v at p, keeps half the length it had after the clearance at least
+  bool keeps_half_length(std::size_t v, std::size_t w, const Point_2d& p) const
+  {
+    return length_2d(minus_2d(m_xy[w], p)) >= 0.5 * length_2d(minus_2d(m_cleared_xy[w], m_cleared_xy[v]));
+  }
+
   double worst_badness_at(std::size_t v, const Vertex_quads& quads_at) const
   {
     double worst = 0;
@@ -1496,7 +1502,7 @@ private:
         while(Q[c] != v) ++c;
         for(int side : { 1, 3 }) {
           const std::size_t w = Q[(c + side) % 4];
-          if(length_2d(minus_2d(m_xy[w], m_xy[v])) < 0.5 * length_2d(minus_2d(m_cleared_xy[w], m_cleared_xy[v])))
+          if(!keeps_half_length(v, w, m_xy[v]))
             return true;
         }
       }
