@@ -1145,18 +1145,40 @@ TEST(Buffer_layers, templates_meet_lemma_2_on_uniform_cores)
 // Adaptive cores (../shared/data, skipped when absent): the bisector steps and the lattice's
 // left 18 of Lake Superior's 2310 buffer-side angles out and 16 of the guitar's 1110 (quads
 // that are not squares, transition templates' 45-degree corners); the plane searches, the core
-// giving way and the filled notches searched off the bisector leave 8 and 6, most beside the
-// domain's sharp corners or spikes (§5, not Lemma 2) or notches whose core angles are all 45
-// degrees with no room to fill them. (Not the bird: a boundary edge at its tail's sharp
-// corner is at 106 degrees to the boundary, as before.)
+// giving way, the filled notches searched off the bisector and the windows of five moving
+// together leave 8 and 5, most beside the domain's sharp corners or spikes (§5, not Lemma 2)
+// or notches whose core angles are all 45 degrees with no room to fill them. (Not the bird
+// here: a boundary edge at its tail's sharp corner is at 106 degrees to the boundary, as
+// before; see the next test.)
 TEST(Buffer_layers, templates_nearly_meet_lemma_2_on_adaptive_cores)
 {
-  for(const auto& [name, max_outside] : { std::make_pair(std::string("lake_superior/lake_superior.poly"), std::size_t(10)),
-                                          std::make_pair(std::string("guitar/guitar.poly"), std::size_t(8)) }) {
+  for(const auto& [name, max_outside] : { std::make_pair(std::string("lake_superior/lake_superior.poly"), std::size_t(8)),
+                                          std::make_pair(std::string("guitar/guitar.poly"), std::size_t(5)) }) {
     if(!std::ifstream(std::string(QM2_SHARED_DATA_DIR) + "/" + name))
       GTEST_SKIP() << "no " << name << " in the shared data";
     check_lemma_2(load(name), name, max_outside);
   }
+}
+
+// The bird's narrow channels leave tongues of core one or two cells wide, whose tips turn by
+// 180 degrees over a few vertices, each at the end of quads whose other corners are at 45 or
+// 135: no vertex can move alone. Five consecutive vertices moving in turn (search_window())
+// bring the tips at (-0.768, -8.228) and (-0.646, -8.153) in: 5 buffer-side angles out
+// before, 2 after (both beside sharp corners or a transition template's 45-degree corner).
+TEST(Buffer_layers, tongue_tips_move_with_their_neighbours)
+{
+  const std::string name = "bird/bird.poly";
+  if(!std::ifstream(std::string(QM2_SHARED_DATA_DIR) + "/" + name))
+    GTEST_SKIP() << "no " << name << " in the shared data";
+  const Domain d = load(name);
+  Mesher mesher(d);
+  const Mesh templates = mesher.run(Stage::TEMPLATES);
+  std::size_t outside = 0;
+  for(double a : buffer_side_angles(templates)) outside += a < 112.5 - 1e-6 || a > 225 + 1e-6;
+  EXPECT_LE(outside, 2u);
+  const auto range = qm2_checks::angle_range(templates);
+  EXPECT_GE(range.min, 45 - 1e-9);
+  EXPECT_LE(range.max, 135 + 1e-9);
 }
 
 // the buffer-side angles of `core`'s boundary within [112.5, 225], its core angles within

@@ -31,7 +31,8 @@
 //    then searches the plane around it (a ring of points, then a pattern search) for where the
 //    three betas come nearest the range, and if its own is still out, the interior core
 //    vertices within two quads of it may give way (they move to keep their quads within
-//    [45°, 135°]). Not near an input corner: its buffer is the corner's (§5).
+//    [45°, 135°]); still out, it moves with its two neighbours each side (search_window()).
+//    Not near an input corner: its buffer is the corner's (§5).
 //    A notch under 95° that still cannot move (a core angle of 45° at it) gets a new core quad
 //    over it, its fourth corner on the bisector or, beside an adaptive core, searched for off
 //    it, which leaves about the angles the move would have; not where the notch faces a corner
@@ -1445,6 +1446,82 @@ private:
       }
       if(!changed) break;
     }
+    for(const auto& cyc : m_cycles)
+      for(std::size_t i = 0; i < cyc.size(); ++i)
+        search_window(cyc, i, quads_at);
+  }
+
+  // A vertex still out whose quad's other corners are at the range's ends (a transition
+  // template's corner at 45 and 135 degrees, a tongue's tip) cannot move alone: its
+  // neighbours on the cycle, two each side, move in turn (each as search_boundary_vertex()
+  // moves one) while that lowers the excesses of the seven buffer-side angles from three
+  // before to three after it; kept if fewer are out, or as many but less far.
+  bool search_window(const std::vector<std::size_t>& cyc, std::size_t i, const Vertex_quads& quads_at)
+  {
+    const std::size_t n = cyc.size();
+    if(n < 8) return false;
+    auto node = [&](int d) { return cyc[(i + 2 * n + d) % n]; };
+    auto beta_at = [&](int d) { return right_side_angle(m_xy[node(d - 1)], m_xy[node(d)], m_xy[node(d + 1)]); };
+    if(buffer_angle_excess(beta_at(0)) <= angle_tolerance || near_input_corner(cyc[i])) return false;
+    auto objective = [&](bool count_first) {
+      double out = 0, worst = 0, sum = 0;
+      for(int d = -3; d <= 3; ++d) {
+        const double x = buffer_angle_excess(beta_at(d));
+        out += x > angle_tolerance / 2 ? 1 : 0;
+        worst = (std::max)(worst, x);
+        sum += x;
+      }
+      return (count_first ? 1000.0 * out : 0.0) + worst + 0.1 * sum;
+    };
+    const double start = objective(true);
+    std::vector<std::size_t> movers;
+    std::vector<Point_2d> before;
+    for(int d = -2; d <= 2; ++d) {
+      const std::size_t v = node(d);
+      if(m_fixed[v] || near_input_corner(v)) continue;
+      movers.push_back(v);
+      before.push_back(m_xy[v]);
+    }
+    const double pi = 3.14159265358979323846;
+    for(int sweep = 0; sweep < 6; ++sweep) {
+      bool moved = false;
+      for(int d = -2; d <= 2; ++d) {
+        const std::size_t v = node(d);
+        if(std::find(movers.begin(), movers.end(), v) == movers.end()) continue;
+        const std::size_t a = node(d - 1), c = node(d + 1);
+        const Point_2d old = m_xy[v];
+        const double e = 0.5 * (length_2d(minus_2d(old, m_xy[a])) + length_2d(minus_2d(m_xy[c], old)));
+        double best = objective(false);
+        Point_2d best_p = old;
+        auto consider = [&](const Point_2d& p) {
+          m_xy[v] = p;
+          const double x = objective(false);
+          m_xy[v] = old;
+          if(!(x < best - angle_tolerance / 10) || !admissible_boundary_position(a, v, c, p, quads_at)) return false;
+          best = x;
+          best_p = p;
+          return true;
+        };
+        for(double r : { 0.05, 0.1, 0.2 })
+          for(int k = 0; k < 12; ++k)
+            consider(Point_2d{ old.x + r * e * std::cos(k * pi / 6), old.y + r * e * std::sin(k * pi / 6) });
+        pattern_search(best_p, e, consider);
+        m_xy[v] = best_p;
+        moved = moved || best_p.x != old.x || best_p.y != old.y;
+      }
+      if(!moved) break;
+    }
+    const bool kept = objective(true) < start - angle_tolerance;
+    for(std::size_t k = 0; k < movers.size(); ++k) {
+      const std::size_t v = movers[k];
+      if(m_xy[v].x == before[k].x && m_xy[v].y == before[k].y) continue;
+      if(kept)
+        m_mesh.points[v] = m_traits.construct_point_2_object()(FT(m_xy[v].x), FT(m_xy[v].y));
+      else
+        m_xy[v] = before[k];
+    }
+    if(kept) ++m_report.searched_vertices;
+    return kept;
   }
 
   // the interior core vertices (not on a cycle, not the domain's isolated points) of the quads
