@@ -1181,6 +1181,61 @@ TEST(Buffer_layers, tongue_tips_move_with_their_neighbours)
   EXPECT_LE(range.max, 135 + 1e-9);
 }
 
+// Lemma 3 on the first buffer layer of adaptive cores, as the stage leaves it (before the
+// strip and the optimisation): its quads' angles lie in [45, 135] but beside the domain's
+// sharp corners (within three of the quad's sides of a loop vertex turning by 20 degrees or
+// more: §5's fans and rotated bisectors take over there) and where Lemma 2 did not hold
+// (Lake Superior's tongue tip at (0.4979, -0.6300), whose 249-degree buffer-side angle the
+// first layer splits into 169 and 28 degrees).
+TEST(Buffer_layers, first_layer_meets_lemma_3_away_from_sharp_corners)
+{
+  for(const auto& [name, max_outside] : { std::make_pair(std::string("lake_superior/lake_superior.poly"), std::size_t(1)),
+                                          std::make_pair(std::string("guitar/guitar.poly"), std::size_t(0)),
+                                          std::make_pair(std::string("river/river.poly"), std::size_t(0)),
+                                          std::make_pair(std::string("naca0012/naca0012.poly"), std::size_t(0)),
+                                          std::make_pair(std::string("airfoil_30p30n/airfoil_30p30n.poly"), std::size_t(0)) }) {
+    SCOPED_TRACE(name);
+    if(!std::ifstream(std::string(QM2_SHARED_DATA_DIR) + "/" + name))
+      GTEST_SKIP() << "no " << name << " in the shared data";
+    const Domain d = load(name);
+    const Loops loops = QM::extract_loops(d);
+    std::vector<P2d> corners;
+    for(std::size_t l = 0; l < loops.loops.size(); ++l)
+      for(std::size_t k = 0; k < loops.loops[l].vertices.size(); ++k)
+        if(std::abs(interior_angle(d, loops, l, k) - 180) >= 20)
+          corners.push_back(QM::internal::to_point_2d(d.points[loops.loops[l].vertices[k]]));
+    Mesher mesher(d);
+    const Mesh first = mesher.run(Stage::BUFFER1); // the layer: its round's last quads
+    const std::size_t layer = mesher.buffer_report().first_layer_quads;
+    ASSERT_GT(layer, 0u);
+    std::size_t outside = 0, beside_corners = 0;
+    for(std::size_t q = first.quads.size() - layer; q < first.quads.size(); ++q) {
+      std::array<P2d, 4> P;
+      for(int k = 0; k < 4; ++k) P[k] = QM::internal::to_point_2d(first.points[first.quads[q][k]]);
+      double lo = 180, hi = 0, side = 0;
+      P2d centre{ 0, 0 };
+      for(int k = 0; k < 4; ++k) {
+        const P2d &a = P[(k + 3) % 4], &b = P[k], &c = P[(k + 1) % 4];
+        const double ux = a.x - b.x, uy = a.y - b.y, wx = c.x - b.x, wy = c.y - b.y;
+        const double angle = std::acos(std::clamp((ux * wx + uy * wy) / std::hypot(ux, uy) / std::hypot(wx, wy), -1.0, 1.0)) * 180 / pi;
+        lo = (std::min)(lo, angle);
+        hi = (std::max)(hi, angle);
+        side = (std::max)(side, std::hypot(wx, wy));
+        centre.x += b.x / 4;
+        centre.y += b.y / 4;
+      }
+      if(lo >= 45 - 1e-6 && hi <= 135 + 1e-6) continue;
+      const bool beside = std::any_of(corners.begin(), corners.end(), [&](const P2d& c) {
+        return std::hypot(c.x - centre.x, c.y - centre.y) < 3 * side;
+      });
+      (beside ? beside_corners : outside) += 1;
+    }
+    EXPECT_LE(outside, max_outside) << "first-layer quads outside [45, 135] away from sharp corners";
+    std::printf("[buffer] lemma 3 %-34s %s: %zu first-layer quads, outside [45, 135]: %zu beside sharp corners, %zu elsewhere\n",
+                name.c_str(), qm2_test::exact_constructions ? "epeck" : "epick", layer, beside_corners, outside);
+  }
+}
+
 // the buffer-side angles of `core`'s boundary within [112.5, 225], its core angles within
 // [45, 135]
 void expect_lemma_2_angles(const Mesh& core)
