@@ -254,6 +254,10 @@ TEST(IO_read, PolyTolerates)
   EXPECT_EQ(d.points.size(), 3u);
   EXPECT_EQ(d.segments.size(), 3u);
   EXPECT_TRUE(d.holes.empty());
+  // Regions 0-based with an attribute alone (Triangle's maximum area is optional), comments after.
+  std::istringstream r("3\n1 0 0\n2 1 0\n3 0 1\n3\n1 1 2\n2 2 3\n3 3 1\n0\n2 # regions\n0 0.2 0.2 7\n1 0.3 0.2 -1 -1\n# end\n\n");
+  ASSERT_TRUE(QIO::read_poly(r, d, &err)) << err;
+  EXPECT_EQ(d.points.size(), 3u);
 }
 
 TEST(IO_read, PolyWithZeroVerticesReadsTheNodeBesideIt)
@@ -350,6 +354,20 @@ TEST(IO_read, PolyMalformedCases)
     {"hole_non_numeric", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n1\n1 0.2 y\n", 7, "expected a number for the y coordinate of hole 1"},
     {"hole_nan", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n1\n1 NaN 0.2\n", 7, "not finite"},
     {"hole_trailing_garbage", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n1\n1 0.2 0.2 0.3\n", 7, "unexpected text"},
+    // After the holes only the optional regional-attribute section may follow (it was all
+    // ignored, junk included).
+    {"junk_after_holes", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n3 0\n1 1 2\n2 2 3\n3 3 1\n0\njunk here\n", 10,
+     "unexpected text \"junk\" after the holes"},
+    {"junk_after_regions", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n3 0\n1 1 2\n2 2 3\n3 3 1\n0\n1\n1 0.2 0.2 7 0.1\n\n2 2\n", 13,
+     "unexpected text \"2\" after the last section (the regional attributes, header line 10)"},
+    {"negative_region_count", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n0\n-1\n", 7, "negative"},
+    {"truncated_regions", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n0\n2\n1 0.2 0.2 7\n", 8, "end of file"},
+    {"region_without_attribute", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n0\n1\n1 0.2 0.2\n", 8,
+     "region 1 needs two coordinates and an attribute"},
+    {"region_bad_area", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n0\n1\n1 0.2 0.2 7 big\n", 8,
+     "expected a number for the maximum area of region 1"},
+    {"region_trailing_garbage", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n0\n1\n1 0.2 0.2 7 0.1 9\n", 8, "unexpected text"},
+    {"region_skipped_index", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n0\n2\n0 0.2 0.2 7\n2 0.3 0.2 7\n", 9, "out of sequence"},
   };
   for(const Bad_case& c : cases) {
     SCOPED_TRACE(c.name);
