@@ -331,6 +331,12 @@ TEST(IO_read, PolyMalformedCases)
     {"missing_y", "3 2 0 0\n1 0 0\n2 1\n3 0 1\n", 3, "only one coordinate"},
     {"vertex_trailing_garbage", "3 2 0 0\n1 0 0\n2 1 0 junk\n3 0 1\n", 3, "unexpected text \"junk\""},
     {"vertex_bad_marker", "3 2 0 1\n1 0 0 1\n2 1 0 a\n3 0 1 1\n", 3, "boundary marker"},
+    // A line short of what its header announces (Triangle's default of 0 hid a lost column).
+    {"vertex_missing_marker", "3 2 0 1\n1 0 0 1\n2 1 0\n3 0 1 1\n", 3,
+     "vertex 2 has 0 value(s) after its coordinates, but the header (line 1) announces 0 attribute(s) and 1 marker(s)"},
+    {"vertex_missing_attribute", "3 2 2 1\n1 0 0 5 6 1\n2 1 0 5 1\n3 0 1 5 6 1\n", 3,
+     "vertex 2 has 2 value(s) after its coordinates, but the header (line 1) announces 2 attribute(s) and 1 marker(s)"},
+    {"vertex_missing_attributes", "# x\n3 2 1\n0 0 0 5\n1 1 0 5\n2 0 1\n", 5, "vertex 2 has 0 value(s)"},
     {"nan", "3 2 0 0\n1 0 0\n2 nan 0\n3 0 1\n", 3, "not finite"},
     {"inf", "3 2 0 0\n1 0 0\n2 1 0\n3 0 -inf\n", 4, "not finite"},
     {"infinity", "3 2 0 0\n1 0 0\n2 Infinity 0\n3 0 1\n", 3, "not finite"},
@@ -442,6 +448,7 @@ TEST(IO_read, NodeFile)
     {"n_trailing", "2 2 0 0\n1 0 0\n2 1 0\n3 0 1\n", 4, "after the last vertex"},
     {"n_dim", "2 1 0 0\n", 1, "dimension"},
     {"n_dup", "2 2 0 0\n1 0 0\n2 0 0\n", 3, "duplicate point"},
+    {"n_missing_marker", "2 2 0 1\n1 0 0 1\n2 1 0\n", 3, "announces 0 attribute(s) and 1 marker(s)"},
   };
   for(const Bad_case& c : cases) {
     SCOPED_TRACE(c.name);

@@ -264,7 +264,9 @@ inline std::string node_file_beside(const std::string& poly_file)
 /// holes if it is absent, is an error. `#` starts a comment. Vertex
 /// indices are consecutive from 0 or 1: the first vertex decides, as in Triangle, and segment
 /// endpoints use the same base; segment and hole numbers are consecutive from 0 or 1 too.
-/// Missing attributes and markers default to 0 (as in Triangle); extra tokens are errors.
+/// A vertex line holds exactly the attributes and marker its header announces: Triangle
+/// defaults missing ones to 0, here a short line is an error, as is an extra token. A
+/// missing segment marker defaults to 0.
 /// A `.poly` listing 0 vertices takes them from the `.node` file beside it, which only the
 /// file-name overload can do.
 ///
