@@ -247,9 +247,9 @@ TEST(IO_read, PolyTolerates)
   using namespace qm2_test_io_read;
   Domain d;
   std::string err;
-  // CRLF, tabs, comments after data, missing optional header fields and markers, a trailing
+  // CRLF, tabs, comments after data, missing optional header fields, a trailing
   // regional-attribute section.
-  std::istringstream s("# c\r\n3\r\n1\t0 0 # a\r\n2 1 0\r\n3 0 1\r\n\r\n3 1\r\n1 1 2 5\r\n2 2 3\r\n3 3 1\r\n0\r\n1\r\n1 0.2 0.2 7 0.1\r\n");
+  std::istringstream s("# c\r\n3\r\n1\t0 0 # a\r\n2 1 0\r\n3 0 1\r\n\r\n3 1\r\n1 1 2 5\r\n2 2 3 0\r\n3 3 1 -2\r\n0\r\n1\r\n1 0.2 0.2 7 0.1\r\n");
   ASSERT_TRUE(QIO::read_poly(s, d, &err)) << err;
   EXPECT_EQ(d.points.size(), 3u);
   EXPECT_EQ(d.segments.size(), 3u);
@@ -352,6 +352,8 @@ TEST(IO_read, PolyMalformedCases)
     {"segment_non_numeric", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n1 0\n1 1 b\n0\n", 6, "expected an integer vertex index"},
     {"segment_missing_end", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n1 0\n1 1\n0\n", 6, "two vertex indices"},
     {"segment_trailing_garbage", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n1 0\n1 1 2 3\n0\n", 6, "unexpected text"},
+    {"segment_missing_marker", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n2 1\n1 1 2 1\n2 2 3\n0\n", 7,
+     "segment 2 has no boundary marker, but the segment header (line 5) announces 1 marker"},
     {"segment_bad_marker_count", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n1 2\n", 5, "must be 0 or 1"},
     {"segment_skipped_index", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n2 0\n1 1 2\n3 2 3\n0\n", 7, "out of sequence"},
     {"zero_length_segment", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n2 0\n1 1 2\n2 3 3\n0\n", 7, "zero length"},

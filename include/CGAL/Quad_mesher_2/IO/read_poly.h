@@ -64,7 +64,7 @@ bool read_poly_text(Text_lines& r, const std::string& node_file, Domain_2<K>& ou
   segs.reserve((std::min)(ns, cap));
   seg_lines.reserve((std::min)(ns, cap));
   std::size_t seg_base = 0;
-  const std::size_t max_tokens = 3 + static_cast<std::size_t>(nmark);
+  const std::size_t line_tokens = 3 + static_cast<std::size_t>(nmark);
   for(std::size_t i = 0; i < ns; ++i) {
     if(!r.next()) {
       msg = r.where(r.end_line()) + "unexpected end of file: the segment header (line " + std::to_string(seg_header_line) +
@@ -96,9 +96,15 @@ bool read_poly_text(Text_lines& r, const std::string& node_file, Domain_2<K>& ou
       }
       s[e] = static_cast<std::size_t>(a) - base;
     }
-    if(r.size() > max_tokens) {
-      msg = r.here() + "unexpected text " + quote(r[max_tokens]) + " after segment " + std::string(r[0]) + " (the header announces " +
+    if(r.size() > line_tokens) {
+      msg = r.here() + "unexpected text " + quote(r[line_tokens]) + " after segment " + std::string(r[0]) + " (the header announces " +
             std::to_string(nmark) + " marker(s))";
+      return false;
+    }
+    // The marker the header announces, as for the vertices (Triangle would default it to 0).
+    if(r.size() < line_tokens) {
+      msg = r.here() + "segment " + std::string(r[0]) + " has no boundary marker, but the segment header (line " +
+            std::to_string(seg_header_line) + ") announces 1 marker";
       return false;
     }
     long long m = 0;
@@ -264,9 +270,8 @@ inline std::string node_file_beside(const std::string& poly_file)
 /// holes if it is absent, is an error. `#` starts a comment. Vertex
 /// indices are consecutive from 0 or 1: the first vertex decides, as in Triangle, and segment
 /// endpoints use the same base; segment and hole numbers are consecutive from 0 or 1 too.
-/// A vertex line holds exactly the attributes and marker its header announces: Triangle
-/// defaults missing ones to 0, here a short line is an error, as is an extra token. A
-/// missing segment marker defaults to 0.
+/// A vertex or segment line holds exactly the attributes and marker its header announces:
+/// Triangle defaults missing ones to 0, here a short line is an error, as is an extra token.
 /// A `.poly` listing 0 vertices takes them from the `.node` file beside it, which only the
 /// file-name overload can do.
 ///
