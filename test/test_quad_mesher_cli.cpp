@@ -166,6 +166,14 @@ TEST(quad_mesher_cli, usage_errors)
   EXPECT_EQ(run(lake + " -o " + m.string() + " --max-size -1").status, 2);
   EXPECT_EQ(run(lake + " -o " + m.string() + " --max-size abc").status, 2);
   EXPECT_EQ(run(lake + " -o " + m.string() + " --curves spline --max-turning-angle 0.01").status, 2); // below 0.1
+  // the spline options do nothing to polygon loops: refused, not ignored
+  for(const char* option : { "--max-turning-angle 10", "--chord-error 0.1" })
+    for(const char* curves : { "", " --curves polygon" }) {
+      const Cli_run r = run(lake + " -o " + m.string() + " --stop-after quadtree" + curves + " " + option);
+      EXPECT_EQ(r.status, 2) << option << curves;
+      EXPECT_NE(r.err.find("quad-mesher: " + std::string(option).substr(0, std::string(option).find(' ')) +
+                           " applies only with --curves spline"), std::string::npos) << r.err;
+    }
   for(const char* size : { "nan", "inf", "-inf" }) { // not through to the library (exit 1 for nan)
     const Cli_run r = run(lake + " -o " + m.string() + " --min-size " + size);
     EXPECT_EQ(r.status, 2) << size;
@@ -220,6 +228,8 @@ TEST(quad_mesher_cli, spline_curves_are_decomposed)
   EXPECT_TRUE(report["seconds"].contains("curves"));
   EXPECT_TRUE(report["validity"]["valid"].get<bool>());
   EXPECT_NE(run(poly.string() + " --curves bezier -o " + msh.string()).status, 0);
+  r = run(poly.string() + " --curves spline --max-turning-angle 10 --chord-error 0.01 --stop-after clearance -o " + msh.string());
+  EXPECT_EQ(r.status, 0) << r.err;
 }
 
 TEST(quad_mesher_cli, point_cloud_points_become_vertices)
