@@ -645,6 +645,17 @@ TEST(IO_read, LaterErrorsUseTheFilesNumbersAndLines)
   EXPECT_NE(msg.find("vertex 1 (line 2) (0, 0) is the end of only one segment (segment 1 (line 6))"),
             std::string::npos) << msg;
 
+  // a hole point in the domain, in no hole, is the problem, not the loop around it (which the
+  // message blamed, "the domain lies on neither side of the loop ...")
+  const std::string stray = write_file("stray_hole.poly", "8 2 0 0\n1 0 0\n2 10 0\n3 10 10\n4 0 10\n5 2 2\n6 8 2\n7 8 8\n8 2 8\n"
+                                                          "8 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 5 6\n6 6 7\n7 7 8\n8 8 5\n"
+                                                          "2\n1 5 5\n2 1 1\n");
+  ASSERT_TRUE(QIO::read_poly(stray, d, &err)) << err;
+  msg = loop_error(d);
+  EXPECT_EQ(msg.rfind("hole point 2 (line 21) (1, 1) is in no hole: it lies inside the loop of 4 vertices starting at "
+                      "vertex 1 (line 2) (0, 0) (segment 1 (line 11)) and outside the loops within it, in the domain", 0), 0u)
+      << msg;
+
   // rings of two polygons that cross (the reader leaves crossings to the domain's checks)
   const std::string wkt = write_file("bowtie1.wkt", "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0),\n(2 2, 8 2, 8 8, 2 8, 2 2))\n"
                                                     "POLYGON ((12 1, 12 12, 1 12, 1 1, 12 1))");
