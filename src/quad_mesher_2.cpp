@@ -283,7 +283,7 @@ int main(int argc, char** argv)
                  "how the input's loops are read: 'polygon' (as given) or 'spline' (closed cubic "
                  "splines through their points, decomposed into segments, paper §4.1)")
     ->check(CLI::IsMember({ "polygon", "spline" }));
-  app.add_option("--max-turning-angle", opt.max_turning_angle,
+  CLI::Option* max_turning_angle = app.add_option("--max-turning-angle", opt.max_turning_angle,
                  "with --curves spline: largest turn between neighbouring segments, degrees")
     ->check(CLI::Range(0.1, 90.0)); // finer gives millions of boundary vertices on a circle
   // sizes: finite and not negative (CLI's own check let NaN through to the library, exit 1,
@@ -297,7 +297,7 @@ int main(int argc, char** argv)
       return std::string();
     },
     "FINITE NONNEGATIVE");
-  app.add_option("--chord-error", opt.chord_error,
+  CLI::Option* chord_error = app.add_option("--chord-error", opt.chord_error,
                  "with --curves spline: largest distance between a segment and its curve (0: 1e-3 "
                  "of the bounding-box diagonal)")
     ->check(finite_size);
@@ -336,6 +336,13 @@ int main(int argc, char** argv)
     // CLI11 prints the message; its own codes (105, 106, ...) become the documented 2
     return app.exit(e) == 0 ? 0 : 2;
   }
+
+  // The spline options do nothing without splines: taking them silently would hide that.
+  for(const CLI::Option* spline_only : { max_turning_angle, chord_error })
+    if(spline_only->count() > 0 && opt.curves != "spline") {
+      std::cerr << "quad-mesher: " << spline_only->get_name() << " applies only with --curves spline\n";
+      return 2;
+    }
 
   // Never write over the input, and never write one file twice.
   std::vector<std::string> targets = opt.outputs;

@@ -352,7 +352,32 @@ TEST(Domain_loops_2, HolePointsInsideAndAroundALoopIsAnError)
   add_square(d, 2, 2, 8, 8);
   d.holes.push_back(Point_2(1, 1));
   d.holes.push_back(Point_2(5, 5));
-  QM2_EXPECT_ERROR(d, "neither side", "vertex 0 (0, 0)", "inside no other loop");
+  // The hole point in the domain is the problem, named first (not the loop around it).
+  QM2_EXPECT_ERROR(d, "hole point 0 (1, 1) is in no hole: it lies inside the loop of 4 vertices starting at vertex 0 (0, 0)",
+                   "and outside the loops within it", "neither side of that loop");
+  // In the same place without the hole loop; and in an island, where the hole loop has hole
+  // points on both sides (its parent's region is not to blame: nesting puts a hole there).
+  Domain plain;
+  add_square(plain, 0, 0, 10, 10);
+  plain.holes.push_back(Point_2(1, 1));
+  QM2_EXPECT_ERROR(plain, "hole point 0 (1, 1) is in no hole: it lies inside the loop of 4 vertices starting at vertex 0 (0, 0) "
+                          "(segment 0), in the domain, which would then lie on neither side of that loop");
+  Domain island;
+  add_square(island, 0, 0, 10, 10);
+  add_square(island, 2, 2, 8, 8);
+  add_square(island, 4, 4, 6, 6);
+  island.holes.push_back(Point_2(3, 3));
+  island.holes.push_back(Point_2(5, 5));
+  QM2_EXPECT_ERROR(island, "hole point 1 (5, 5) is in no hole: it lies inside the loop of 4 vertices starting at vertex 8 (4, 4)",
+                   "neither side of that loop");
+  // The hole loop met first (its segments come first): still the hole point in the domain.
+  Domain hole_first;
+  add_square(hole_first, 2, 2, 8, 8);
+  add_square(hole_first, 0, 0, 10, 10);
+  hole_first.holes.push_back(Point_2(1, 1));
+  hole_first.holes.push_back(Point_2(5, 5));
+  QM2_EXPECT_ERROR(hole_first, "hole point 0 (1, 1) is in no hole: it lies inside the loop of 4 vertices starting at vertex 4 (0, 0)",
+                   "neither side of the loop of 4 vertices starting at vertex 0 (2, 2)");
 }
 
 TEST(Domain_loops_2, ReversedAndShuffledInputIsNormalised)

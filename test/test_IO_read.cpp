@@ -247,13 +247,17 @@ TEST(IO_read, PolyTolerates)
   using namespace qm2_test_io_read;
   Domain d;
   std::string err;
-  // CRLF, tabs, comments after data, missing optional header fields and markers, a trailing
+  // CRLF, tabs, comments after data, missing optional header fields, a trailing
   // regional-attribute section.
-  std::istringstream s("# c\r\n3\r\n1\t0 0 # a\r\n2 1 0\r\n3 0 1\r\n\r\n3 1\r\n1 1 2 5\r\n2 2 3\r\n3 3 1\r\n0\r\n1\r\n1 0.2 0.2 7 0.1\r\n");
+  std::istringstream s("# c\r\n3\r\n1\t0 0 # a\r\n2 1 0\r\n3 0 1\r\n\r\n3 1\r\n1 1 2 5\r\n2 2 3 0\r\n3 3 1 -2\r\n0\r\n1\r\n1 0.2 0.2 7 0.1\r\n");
   ASSERT_TRUE(QIO::read_poly(s, d, &err)) << err;
   EXPECT_EQ(d.points.size(), 3u);
   EXPECT_EQ(d.segments.size(), 3u);
   EXPECT_TRUE(d.holes.empty());
+  // Regions 0-based with an attribute alone (Triangle's maximum area is optional), comments after.
+  std::istringstream r("3\n1 0 0\n2 1 0\n3 0 1\n3\n1 1 2\n2 2 3\n3 3 1\n0\n2 # regions\n0 0.2 0.2 7\n1 0.3 0.2 -1 -1\n# end\n\n");
+  ASSERT_TRUE(QIO::read_poly(r, d, &err)) << err;
+  EXPECT_EQ(d.points.size(), 3u);
 }
 
 TEST(IO_read, PolyWithZeroVerticesReadsTheNodeBesideIt)
@@ -327,6 +331,12 @@ TEST(IO_read, PolyMalformedCases)
     {"missing_y", "3 2 0 0\n1 0 0\n2 1\n3 0 1\n", 3, "only one coordinate"},
     {"vertex_trailing_garbage", "3 2 0 0\n1 0 0\n2 1 0 junk\n3 0 1\n", 3, "unexpected text \"junk\""},
     {"vertex_bad_marker", "3 2 0 1\n1 0 0 1\n2 1 0 a\n3 0 1 1\n", 3, "boundary marker"},
+    // A line short of what its header announces (Triangle's default of 0 hid a lost column).
+    {"vertex_missing_marker", "3 2 0 1\n1 0 0 1\n2 1 0\n3 0 1 1\n", 3,
+     "vertex 2 has 0 value(s) after its coordinates, but the header (line 1) announces 0 attribute(s) and 1 marker(s)"},
+    {"vertex_missing_attribute", "3 2 2 1\n1 0 0 5 6 1\n2 1 0 5 1\n3 0 1 5 6 1\n", 3,
+     "vertex 2 has 2 value(s) after its coordinates, but the header (line 1) announces 2 attribute(s) and 1 marker(s)"},
+    {"vertex_missing_attributes", "# x\n3 2 1\n0 0 0 5\n1 1 0 5\n2 0 1\n", 5, "vertex 2 has 0 value(s)"},
     {"nan", "3 2 0 0\n1 0 0\n2 nan 0\n3 0 1\n", 3, "not finite"},
     {"inf", "3 2 0 0\n1 0 0\n2 1 0\n3 0 -inf\n", 4, "not finite"},
     {"infinity", "3 2 0 0\n1 0 0\n2 Infinity 0\n3 0 1\n", 3, "not finite"},
@@ -342,6 +352,8 @@ TEST(IO_read, PolyMalformedCases)
     {"segment_non_numeric", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n1 0\n1 1 b\n0\n", 6, "expected an integer vertex index"},
     {"segment_missing_end", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n1 0\n1 1\n0\n", 6, "two vertex indices"},
     {"segment_trailing_garbage", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n1 0\n1 1 2 3\n0\n", 6, "unexpected text"},
+    {"segment_missing_marker", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n2 1\n1 1 2 1\n2 2 3\n0\n", 7,
+     "segment 2 has no boundary marker, but the segment header (line 5) announces 1 marker"},
     {"segment_bad_marker_count", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n1 2\n", 5, "must be 0 or 1"},
     {"segment_skipped_index", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n2 0\n1 1 2\n3 2 3\n0\n", 7, "out of sequence"},
     {"zero_length_segment", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n2 0\n1 1 2\n2 3 3\n0\n", 7, "zero length"},
@@ -350,6 +362,20 @@ TEST(IO_read, PolyMalformedCases)
     {"hole_non_numeric", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n1\n1 0.2 y\n", 7, "expected a number for the y coordinate of hole 1"},
     {"hole_nan", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n1\n1 NaN 0.2\n", 7, "not finite"},
     {"hole_trailing_garbage", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n1\n1 0.2 0.2 0.3\n", 7, "unexpected text"},
+    // After the holes only the optional regional-attribute section may follow (it was all
+    // ignored, junk included).
+    {"junk_after_holes", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n3 0\n1 1 2\n2 2 3\n3 3 1\n0\njunk here\n", 10,
+     "unexpected text \"junk\" after the holes"},
+    {"junk_after_regions", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n3 0\n1 1 2\n2 2 3\n3 3 1\n0\n1\n1 0.2 0.2 7 0.1\n\n2 2\n", 13,
+     "unexpected text \"2\" after the last section (the regional attributes, header line 10)"},
+    {"negative_region_count", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n0\n-1\n", 7, "negative"},
+    {"truncated_regions", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n0\n2\n1 0.2 0.2 7\n", 8, "end of file"},
+    {"region_without_attribute", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n0\n1\n1 0.2 0.2\n", 8,
+     "region 1 needs two coordinates and an attribute"},
+    {"region_bad_area", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n0\n1\n1 0.2 0.2 7 big\n", 8,
+     "expected a number for the maximum area of region 1"},
+    {"region_trailing_garbage", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n0\n1\n1 0.2 0.2 7 0.1 9\n", 8, "unexpected text"},
+    {"region_skipped_index", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n0\n2\n0 0.2 0.2 7\n2 0.3 0.2 7\n", 9, "out of sequence"},
   };
   for(const Bad_case& c : cases) {
     SCOPED_TRACE(c.name);
@@ -424,6 +450,7 @@ TEST(IO_read, NodeFile)
     {"n_trailing", "2 2 0 0\n1 0 0\n2 1 0\n3 0 1\n", 4, "after the last vertex"},
     {"n_dim", "2 1 0 0\n", 1, "dimension"},
     {"n_dup", "2 2 0 0\n1 0 0\n2 0 0\n", 3, "duplicate point"},
+    {"n_missing_marker", "2 2 0 1\n1 0 0 1\n2 1 0\n", 3, "announces 0 attribute(s) and 1 marker(s)"},
   };
   for(const Bad_case& c : cases) {
     SCOPED_TRACE(c.name);
@@ -617,6 +644,17 @@ TEST(IO_read, LaterErrorsUseTheFilesNumbersAndLines)
   msg = loop_error(d);
   EXPECT_NE(msg.find("vertex 1 (line 2) (0, 0) is the end of only one segment (segment 1 (line 6))"),
             std::string::npos) << msg;
+
+  // a hole point in the domain, in no hole, is the problem, not the loop around it (which the
+  // message blamed, "the domain lies on neither side of the loop ...")
+  const std::string stray = write_file("stray_hole.poly", "8 2 0 0\n1 0 0\n2 10 0\n3 10 10\n4 0 10\n5 2 2\n6 8 2\n7 8 8\n8 2 8\n"
+                                                          "8 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 5 6\n6 6 7\n7 7 8\n8 8 5\n"
+                                                          "2\n1 5 5\n2 1 1\n");
+  ASSERT_TRUE(QIO::read_poly(stray, d, &err)) << err;
+  msg = loop_error(d);
+  EXPECT_EQ(msg.rfind("hole point 2 (line 21) (1, 1) is in no hole: it lies inside the loop of 4 vertices starting at "
+                      "vertex 1 (line 2) (0, 0) (segment 1 (line 11)) and outside the loops within it, in the domain", 0), 0u)
+      << msg;
 
   // rings of two polygons that cross (the reader leaves crossings to the domain's checks)
   const std::string wkt = write_file("bowtie1.wkt", "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0),\n(2 2, 8 2, 8 8, 2 8, 2 2))\n"

@@ -166,6 +166,14 @@ TEST(quad_mesher_cli, usage_errors)
   EXPECT_EQ(run(lake + " -o " + m.string() + " --max-size -1").status, 2);
   EXPECT_EQ(run(lake + " -o " + m.string() + " --max-size abc").status, 2);
   EXPECT_EQ(run(lake + " -o " + m.string() + " --curves spline --max-turning-angle 0.01").status, 2); // below 0.1
+  // the spline options do nothing to polygon loops: refused, not ignored
+  for(const char* option : { "--max-turning-angle 10", "--chord-error 0.1" })
+    for(const char* curves : { "", " --curves polygon" }) {
+      const Cli_run r = run(lake + " -o " + m.string() + " --stop-after quadtree" + curves + " " + option);
+      EXPECT_EQ(r.status, 2) << option << curves;
+      EXPECT_NE(r.err.find("quad-mesher: " + std::string(option).substr(0, std::string(option).find(' ')) +
+                           " applies only with --curves spline"), std::string::npos) << r.err;
+    }
   for(const char* size : { "nan", "inf", "-inf" }) { // not through to the library (exit 1 for nan)
     const Cli_run r = run(lake + " -o " + m.string() + " --min-size " + size);
     EXPECT_EQ(r.status, 2) << size;
@@ -220,6 +228,43 @@ TEST(quad_mesher_cli, spline_curves_are_decomposed)
   EXPECT_TRUE(report["seconds"].contains("curves"));
   EXPECT_TRUE(report["validity"]["valid"].get<bool>());
   EXPECT_NE(run(poly.string() + " --curves bezier -o " + msh.string()).status, 0);
+  r = run(poly.string() + " --curves spline --max-turning-angle 10 --chord-error 0.01 --stop-after clearance -o " + msh.string());
+  EXPECT_EQ(r.status, 0) << r.err;
+}
+
+TEST(quad_mesher_cli, spline_errors_name_the_files_vertices_and_lines)
+{
+  // A simple control polygon with a narrow slit, 1-based after a comment: its spline crosses
+  // itself. The message named the loop "starting at point 0" and the crossing segments by
+  // their 0-based place in the decomposition ("segments 67 (vertices 67 ..."), with no line.
+  auto slit = scratch("slit.poly"), msh = scratch("slit.msh");
+  std::ofstream(slit) << "# slit\n8 2 0 0\n1 0 0\n2 10 0\n3 10 10\n4 5.1 10\n5 5.1 1\n6 4.9 1\n7 4.9 10\n8 0 10\n"
+                         "8 0\n1 1 2\n2 2 3\n3 3 4\n4 4 5\n5 5 6\n6 6 7\n7 7 8\n8 8 1\n0\n";
+  Cli_run r = run(slit.string() + " --curves spline --kernel " + kernel_name + " -o " + msh.string());
+  EXPECT_EQ(r.status, 1);
+  for(const char* part : { "slit.poly: outer loop of 8 control points starting at point 1 (line 3) (0, 0): ",
+                           "segments on the spline from 4 (line 6) to 5 (line 7) (vertices new (",
+                           "and on the spline from 6 (line 8) to 7 (line 9) (vertices new (" })
+    EXPECT_NE(r.err.find(part), std::string::npos) << r.err << "\nlacks: " << part;
+
+  // The hole's spline bulges over the outer loop's straight side x = 0.8: the check of the
+  // decomposed domain names the control points and spans as the file does too.
+  auto bulge = scratch("bulge.poly");
+  {
+    std::ofstream out(bulge);
+    out << "17 2 0 0\n1 0.8 0\n2 10 0\n3 10 10\n4 0.8 10\n";
+    for(int k = 5; k <= 13; ++k) out << k << " 0.8 " << 14 - k << "\n";
+    out << "14 1 1\n15 3 1\n16 3 3\n17 1 3\n17 0\n";
+    for(int k = 1; k <= 13; ++k) out << k << " " << k << " " << k % 13 + 1 << "\n";
+    for(int k = 14; k <= 17; ++k) out << k << " " << k << " " << (k - 13) % 4 + 14 << "\n";
+    out << "1\n1 2 2\n";
+  }
+  r = run(bulge.string() + " --curves spline --kernel " + kernel_name + " -o " + msh.string());
+  EXPECT_EQ(r.status, 1);
+  for(const char* part : { "bulge.poly: after curve decomposition the boundary is not valid",
+                           "segments on the spline from 11 (line 12) to 12 (line 13) (vertices 11 (line 12) (0.8, 3) and new (",
+                           "and on the spline from 14 (line 15) to 17 (line 18) (vertices new (" })
+    EXPECT_NE(r.err.find(part), std::string::npos) << r.err << "\nlacks: " << part;
 }
 
 TEST(quad_mesher_cli, point_cloud_points_become_vertices)

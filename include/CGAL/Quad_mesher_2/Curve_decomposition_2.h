@@ -313,6 +313,24 @@ Domain_2<K> curves_polygon_domain(const std::vector<typename K::Point_2>& poly)
   return d;
 }
 
+/// The segment labels of a decomposed loop whose control point `k` is at position `knots[k]`
+/// (`knots[0] == 0`) of its `size` vertices: each segment is named by the span of the spline it
+/// lies on, from one control point to the next as `control_labels` name them.
+inline std::vector<std::string> curves_span_labels(const std::vector<std::size_t>& knots, std::size_t size,
+                                                   const std::vector<std::string>& control_labels)
+{
+  CGAL_precondition(!knots.empty() && knots[0] == 0);
+  const std::size_t n = knots.size();
+  std::vector<std::string> labels;
+  labels.reserve(size);
+  for(std::size_t k = 0; k < n; ++k) {
+    const std::string span = "on the spline from " + control_labels[k] + " to " + control_labels[(k + 1) % n];
+    const std::size_t end = k + 1 < n ? knots[k + 1] : size;
+    for(std::size_t v = knots[k]; v < end; ++v) labels.push_back(span);
+  }
+  return labels;
+}
+
 /// The work of `decompose_closed_spline()`, on validated options with a resolved tolerance.
 /// Returns, for each output vertex in order, its parameter on the spline; the vertex of
 /// parameter `knot(i)` is control point `i`. `place_by_curvature == false` skips step 1 (the
@@ -429,13 +447,15 @@ std::vector<double> curves_decompose_parameters(const Closed_cubic_spline_2<K>& 
 
 /// Decomposes one closed spline into a polygon (kernel points) and checks the polygon with
 /// exact predicates: simple, and oriented like the control polygon. `tol` 0 means 1e-3 of the
-/// control points' bounding-box diagonal. `what` names the loop in messages. `check_control` validates the control polygon first (the domain path has done
+/// control points' bounding-box diagonal. `what` names the loop in messages, `control_labels`
+/// its control points (new vertices are "new", segments named by their span). `check_control` validates the control polygon first (the domain path has done
 /// that already with `extract_loops()`). `knot_index`, if given, receives the output index of
 /// every control point.
 template <class K>
 std::vector<typename K::Point_2> curves_decompose_loop(const std::vector<typename K::Point_2>& control, double max_angle_deg,
                                                        double tol, std::size_t max_points, const K& traits,
-                                                       const std::string& what, bool check_control,
+                                                       const std::string& what,
+                                                       const std::vector<std::string>& control_labels, bool check_control,
                                                        std::vector<std::size_t>* knot_index)
 {
   typedef typename K::Point_2 Point_2;
@@ -467,12 +487,13 @@ std::vector<typename K::Point_2> curves_decompose_loop(const std::vector<typenam
 
   std::vector<Point_2> poly;
   poly.reserve(params.size());
-  if(knot_index) knot_index->clear();
+  std::vector<std::size_t> knots;
+  knots.reserve(n);
   const auto construct = traits.construct_point_2_object();
   std::size_t next_knot = 0;
   for(double u : params) {
     if(next_knot < n && u == spline.knot(next_knot)) {  // the user's point, exactly
-      if(knot_index) knot_index->push_back(poly.size());
+      knots.push_back(poly.size());
       poly.push_back(control[next_knot++]);
     } else {
       const std::array<double, 2> p = spline.point(u);
@@ -484,9 +505,14 @@ std::vector<typename K::Point_2> curves_decompose_loop(const std::vector<typenam
   // The spline of a simple control polygon can still cross itself where the points are
   // very unevenly spaced (the overshoot of a C2 curve at a hairpin), and the rounding of the
   // double evaluation can make two nearby pieces touch. Either way the polygon is not a
-  // boundary: check it with the exact predicates of extract_loops().
+  // boundary: check it with the exact predicates of extract_loops(), whose messages name the
+  // user's points and the spans between them.
+  Domain_2<K> decomposed = curves_polygon_domain<K>(poly);
+  decomposed.point_labels.assign(poly.size(), "new");
+  for(std::size_t k = 0; k < n; ++k) decomposed.point_labels[knots[k]] = control_labels[k];
+  decomposed.segment_labels = curves_span_labels(knots, poly.size(), control_labels);
   try {
-    extract_loops(curves_polygon_domain<K>(poly), traits);
+    extract_loops(decomposed, traits);
   } catch(const Meshing_error& e) {
     throw Meshing_error(what + ": the cubic spline through the control points crosses or touches itself (its control "
                         "polygon is simple, but the curve overshoots where the points are unevenly spaced); add control "
@@ -498,6 +524,7 @@ std::vector<typename K::Point_2> curves_decompose_loop(const std::vector<typenam
   if(curves_simple_polygon_orientation(poly, traits) != curves_simple_polygon_orientation(control, traits))
     throw Meshing_error(what + ": the cubic spline through the control points runs around the other way than its "
                         "control polygon; add control points or space them more evenly");
+  if(knot_index) *knot_index = std::move(knots);
   return poly;
 }
 
@@ -542,10 +569,13 @@ std::vector<typename K::Point_2> decompose_closed_spline(const std::vector<typen
                                                          const K& traits = K())
 {
   internal::curves_check_options(options);
+  std::vector<std::string> positions;  // as `Closed_cubic_spline_2` names the points
+  positions.reserve(control.size());
+  for(std::size_t i = 0; i < control.size(); ++i) positions.push_back(std::to_string(i));
   return internal::curves_decompose_loop(control, options.max_turning_angle_deg, options.max_chord_error,
                                          options.max_points_per_loop,
                                          traits, "closed spline of " + std::to_string(control.size()) + " points",
-                                         true, nullptr);
+                                         positions, true, nullptr);
 }
 
 /// \ingroup PkgQuadMesher2Ref
@@ -553,12 +583,13 @@ std::vector<typename K::Point_2> decompose_closed_spline(const std::vector<typen
 /// control points of a closed cubic spline and returns the domain with each loop replaced by
 /// the spline's decomposition (`decompose_closed_spline()`).
 ///
-/// The returned domain keeps all of `domain.points` at their indices (so control points and
-/// points on no segment keep their numbers in messages) and appends the new vertices; its
-/// segments are rebuilt loop by loop, with the domain on the left of each (outer loops
-/// counterclockwise, holes clockwise; the paper lists its curves clockwise, this package's
-/// convention is the one `extract_loops()` normalises to), and its hole points are
-/// `domain.holes`. A point cloud
+/// The returned domain keeps all of `domain.points` at their indices and with their labels
+/// (so control points and points on no segment keep their numbers and lines in messages) and
+/// appends the new vertices, labelled `new`; its segments are rebuilt loop by loop, with the
+/// domain on the left of each (outer loops counterclockwise, holes clockwise; the paper lists
+/// its curves clockwise, this package's convention is the one `extract_loops()` normalises
+/// to), each labelled by the span of the spline it lies on (`on the spline from 1 (line 2) to
+/// 2 (line 3)`), and its hole points are `domain.holes`, with their labels. A point cloud
 /// (no segments) is returned unchanged. The default tolerance is 1e-3 of the diagonal of the
 /// bounding box of all the domain's points, so that every loop is held to the same absolute
 /// error.
@@ -580,20 +611,30 @@ Domain_2<K> decompose_domain_curves(const Domain_2<K>& domain, const Curve_decom
   double tol = options.max_chord_error;
   if(tol == 0) tol = 1e-3 * internal::curves_bbox_diagonal(domain.points, traits);
 
+  // Messages name the input's points, segments and hole points as the user knows them (its
+  // labels), the new vertices "new", and the new segments by the span they lie on.
   Domain_2<K> out;
   out.points = domain.points;
   out.holes = domain.holes;
+  out.hole_labels = domain.hole_labels;
+  out.point_labels.reserve(domain.points.size());
+  for(std::size_t i = 0; i < domain.points.size(); ++i) out.point_labels.push_back(domain.point_label(i));
   for(const Boundary_loop_2<K>& loop : loops.loops) {
     std::vector<typename K::Point_2> control;
+    std::vector<std::string> control_labels;
     control.reserve(loop.vertices.size());
-    for(std::size_t v : loop.vertices) control.push_back(domain.points[v]);
+    control_labels.reserve(loop.vertices.size());
+    for(std::size_t v : loop.vertices) {
+      control.push_back(domain.points[v]);
+      control_labels.push_back(out.point_labels[v]);
+    }
     const std::string what = std::string(loop.is_outer ? "outer" : "hole") + " loop of " +
                              std::to_string(control.size()) + " control points starting at point " +
-                             std::to_string(loop.vertices[0]) + " " +
-                             internal::loops_format_point(domain.points[loop.vertices[0]], traits);
+                             control_labels[0] + " " + internal::loops_format_point(control[0], traits);
     std::vector<std::size_t> knot_index;
     const std::vector<typename K::Point_2> poly = internal::curves_decompose_loop(
-        control, options.max_turning_angle_deg, tol, options.max_points_per_loop, traits, what, false, &knot_index);
+        control, options.max_turning_angle_deg, tol, options.max_points_per_loop, traits, what, control_labels, false,
+        &knot_index);
     // Output index of each polygon vertex: the control points keep theirs, new ones append.
     std::vector<std::size_t> index(poly.size(), 0);
     std::vector<char> is_knot(poly.size(), 0);
@@ -605,8 +646,11 @@ Domain_2<K> decompose_domain_curves(const Domain_2<K>& domain, const Curve_decom
       if(is_knot[v]) continue;
       index[v] = out.points.size();
       out.points.push_back(poly[v]);
+      out.point_labels.push_back("new");
     }
     for(std::size_t v = 0; v < poly.size(); ++v) out.segments.push_back({index[v], index[(v + 1) % poly.size()]});
+    const std::vector<std::string> spans = internal::curves_span_labels(knot_index, poly.size(), control_labels);
+    out.segment_labels.insert(out.segment_labels.end(), spans.begin(), spans.end());
   }
   // Each loop is simple on its own; the whole must still be a boundary: a spline that bulges
   // beyond its control polygon may cross another loop or pass over a hole point or a point on

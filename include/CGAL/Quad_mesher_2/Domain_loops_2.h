@@ -409,7 +409,7 @@ private:
   // ---- 7. hole points ---------------------------------------------------------------------
   void locate_holes()
   {
-    m_has_hole.assign(m_loops.size() + 1, false);  // region l: inside loop l, outside its children
+    m_hole_in.assign(m_loops.size() + 1, none);  // region l: inside loop l, outside its children
     for(std::size_t h = 0; h < m_d.holes.size(); ++h) {
       const Point_2& p = m_d.holes[h];
       std::size_t on_seg = none;
@@ -429,7 +429,7 @@ private:
                   loop_str(top[0]);
         throw Meshing_error("hole point " + m_d.hole_label(h) + " " + pt(p) + " lies outside every boundary loop: " + which);
       }
-      m_has_hole[region] = true;
+      if(m_hole_in[region] == none) m_hole_in[region] = h;
     }
   }
 
@@ -440,7 +440,7 @@ private:
     m_in_domain.assign(nl + 1, false);  // index nl: the unbounded region, never in the domain
     const bool parity = m_d.holes.empty();
     for(std::size_t l = 0; l < nl; ++l)
-      m_in_domain[l] = parity ? (m_depth[l] % 2 == 0) : !m_has_hole[l];
+      m_in_domain[l] = parity ? (m_depth[l] % 2 == 0) : m_hole_in[l] == none;
     m_is_outer.resize(nl);
     for(std::size_t l = 0; l < nl; ++l) {
       const bool inside = m_in_domain[l];
@@ -448,10 +448,20 @@ private:
       if(inside && outside)
         throw Meshing_error("the domain lies on both sides of " + loop_str(l) +
                             ": internal boundaries are not supported; if the loop bounds a hole, put a hole point inside it");
-      if(!inside && !outside)
-        throw Meshing_error("the domain lies on neither side of " + loop_str(l) +
-                            (m_parent[l] == none ? std::string(": a hole point marks its inside as a hole, and it is inside no other loop")
-                                                 : ": hole points mark both its inside and its outside as holes"));
+      if(!inside && !outside) {
+        // Hole points on both sides (outside a top loop is the unbounded region): one of them
+        // is in no hole. Name the one on the side of even depth, where nesting puts the domain
+        // (inside a top loop, in an island), not the loop, which is fine.
+        const std::size_t region = m_depth[l] % 2 == 0 ? l : m_parent[l];
+        const std::size_t h = m_hole_in[region];
+        bool has_inner = false;
+        for(std::size_t c = 0; c < nl; ++c) has_inner = has_inner || m_parent[c] == region;
+        throw Meshing_error("hole point " + m_d.hole_label(h) + " " + pt(m_d.holes[h]) + " is in no hole: it lies inside " +
+                            loop_str(region) + (has_inner ? " and outside the loops within it" : "") +
+                            ", in the domain, which would then lie on neither side of " +
+                            (region == l ? std::string("that loop") : loop_str(l)) +
+                            "; a hole point must lie inside the loop of the hole it marks");
+      }
       m_is_outer[l] = inside;
     }
   }
@@ -469,7 +479,7 @@ private:
   std::vector<std::size_t> m_inside;
   std::vector<std::size_t> m_depth;
   std::vector<std::size_t> m_parent;
-  std::vector<bool> m_has_hole;
+  std::vector<std::size_t> m_hole_in;  // per region (index nl: unbounded), its first hole point or none
   std::vector<bool> m_in_domain;
   std::vector<bool> m_is_outer;
 };
@@ -520,8 +530,10 @@ FT loops_balanced_sum(std::vector<FT> v)
 /// than 3 vertices; a vertex with one segment (open loop, dangling segment) or with more than
 /// two (touching or branching loops); a loop whose vertices are all collinear; two segments
 /// that cross, overlap, or touch (a vertex on another segment, or two vertices at the same
-/// place); a hole point on a segment or outside every loop; a loop with the domain on both or
-/// neither side; a point on no segment that lies on a segment or outside the domain.
+/// place); a hole point on a segment or outside every loop; a loop with the domain on both
+/// sides; hole points on both sides of a loop (named by the one on the side nesting puts in
+/// the domain: inside a top loop, in an island); a point on no segment that lies on a segment
+/// or outside the domain.
 template <class K>
 Domain_loops_2<K> extract_loops(const Domain_2<K>& domain, const K& traits = K())
 {

@@ -386,7 +386,10 @@ inline bool read_vertex_section(Text_lines& r, Vertex_list& out, long long& coun
   const std::size_t n = static_cast<std::size_t>(count);
   out.xy.reserve((std::min)(n, cap));
   out.lines.reserve((std::min)(n, cap));
-  const std::size_t max_tokens = 3 + static_cast<std::size_t>((std::min)(nattr, 1000000LL)) + static_cast<std::size_t>(nmark);
+  // Tokens on every vertex line. No line has as many tokens as the file has bytes, so capping
+  // the attributes there cannot overflow and keeps the count exact for every line.
+  const std::size_t line_tokens = 3 + static_cast<std::size_t>((std::min)(nattr, static_cast<long long>(r.text().size()))) +
+                                  static_cast<std::size_t>(nmark);
   for(std::size_t i = 0; i < n; ++i) {
     if(!r.next()) {
       msg = r.where(r.end_line()) + "unexpected end of file: the header (line " + std::to_string(out.header_line) +
@@ -412,16 +415,24 @@ inline bool read_vertex_section(Text_lines& r, Vertex_list& out, long long& coun
       msg = r.here() + problem;
       return false;
     }
-    if(r.size() > max_tokens) {
+    if(r.size() > line_tokens) {
       const std::string wl = r.here();
-      msg = wl + "unexpected text " + quote(r[max_tokens]) + " after " + label() + " (the header announces " +
+      msg = wl + "unexpected text " + quote(r[line_tokens]) + " after " + label() + " (the header announces " +
             std::to_string(nattr) + " attribute(s) and " + std::to_string(nmark) + " marker(s))";
       return false;
     }
-    // Attributes (ignored) must be numbers; the marker an integer. Missing ones default to 0.
+    // Every attribute and marker the header announces: Triangle would default missing ones to
+    // 0, but a short line cannot say which value is missing, and the header says it is there.
+    if(r.size() < line_tokens) {
+      msg = r.here() + label() + " has " + std::to_string(r.size() - 3) + " value(s) after its coordinates, but the header (line " +
+            std::to_string(out.header_line) + ") announces " + std::to_string(nattr) + " attribute(s) and " +
+            std::to_string(nmark) + " marker(s)";
+      return false;
+    }
+    // Attributes (ignored) must be numbers; the marker an integer.
     for(std::size_t t = 3; t < r.size(); ++t) {
       double dummy;
-      const bool is_marker = (nmark == 1 && t == max_tokens - 1);
+      const bool is_marker = (nmark == 1 && t == line_tokens - 1);
       long long m = 0;
       if(is_marker ? !parse_integer(r[t], m) : !parse_double(r[t], dummy)) {
         msg = r.here() + "expected " + (is_marker ? "an integer boundary marker" : "a number for an attribute") + " of " + label() +

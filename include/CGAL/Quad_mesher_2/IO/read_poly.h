@@ -64,7 +64,7 @@ bool read_poly_text(Text_lines& r, const std::string& node_file, Domain_2<K>& ou
   segs.reserve((std::min)(ns, cap));
   seg_lines.reserve((std::min)(ns, cap));
   std::size_t seg_base = 0;
-  const std::size_t max_tokens = 3 + static_cast<std::size_t>(nmark);
+  const std::size_t line_tokens = 3 + static_cast<std::size_t>(nmark);
   for(std::size_t i = 0; i < ns; ++i) {
     if(!r.next()) {
       msg = r.where(r.end_line()) + "unexpected end of file: the segment header (line " + std::to_string(seg_header_line) +
@@ -96,9 +96,15 @@ bool read_poly_text(Text_lines& r, const std::string& node_file, Domain_2<K>& ou
       }
       s[e] = static_cast<std::size_t>(a) - base;
     }
-    if(r.size() > max_tokens) {
-      msg = r.here() + "unexpected text " + quote(r[max_tokens]) + " after segment " + std::string(r[0]) + " (the header announces " +
+    if(r.size() > line_tokens) {
+      msg = r.here() + "unexpected text " + quote(r[line_tokens]) + " after segment " + std::string(r[0]) + " (the header announces " +
             std::to_string(nmark) + " marker(s))";
+      return false;
+    }
+    // The marker the header announces, as for the vertices (Triangle would default it to 0).
+    if(r.size() < line_tokens) {
+      msg = r.here() + "segment " + std::string(r[0]) + " has no boundary marker, but the segment header (line " +
+            std::to_string(seg_header_line) + ") announces 1 marker";
       return false;
     }
     long long m = 0;
@@ -161,7 +167,66 @@ bool read_poly_text(Text_lines& r, const std::string& node_file, Domain_2<K>& ou
     holes.push_back({x, y});
     hole_lines.push_back(r.line());
   }
-  // An optional regional-attributes section may follow; it is ignored.
+
+  // Optional regional attributes: `<#regions>`, then `<index> <x> <y> <attribute> [<maximum
+  // area>]` (Triangle requires the one value, the second is optional). Read to check them and
+  // ignored; whatever follows is an error, not silently dropped.
+  if(r.next()) {
+    const std::size_t region_header_line = r.line();
+    long long nregions = 0;
+    if(!parse_integer(r[0], nregions)) {
+      msg = r.here() + "unexpected text " + quote(r[0]) + " after the holes (only a regional-attribute section may follow: "
+                       "<#regions>, then <index> <x> <y> <attribute> [<maximum area>] per region)";
+      return false;
+    }
+    if(nregions < 0) { msg = r.here() + "the number of regional attributes is negative (" + std::to_string(nregions) + ")"; return false; }
+    if(r.size() > 1) { msg = r.here() + "unexpected text " + quote(r[1]) + " after the regional-attribute header"; return false; }
+    const std::size_t nr = static_cast<std::size_t>(nregions);
+    std::size_t region_base = 0;
+    for(std::size_t i = 0; i < nr; ++i) {
+      if(!r.next()) {
+        msg = r.where(r.end_line()) + "unexpected end of file: the regional-attribute header (line " +
+              std::to_string(region_header_line) + ") announces " + std::to_string(nr) + " regions, but only " +
+              std::to_string(i) + " were found";
+        return false;
+      }
+      long long idx = 0;
+      if(!parse_integer(r[0], idx)) { msg = r.here() + "expected an integer region index, found " + quote(r[0]); return false; }
+      if(i == 0) {
+        if(idx != 0 && idx != 1) { msg = r.here() + "the first region index must be 0 or 1, found " + std::string(r[0]); return false; }
+        region_base = static_cast<std::size_t>(idx);
+      } else if(idx != static_cast<long long>(i + region_base)) {
+        msg = r.here() + "region index " + std::string(r[0]) + " out of sequence: expected " + std::to_string(i + region_base) +
+              " (indices must be consecutive; an index was skipped or repeated)";
+        return false;
+      }
+      if(r.size() < 4) {
+        msg = r.here() + "region " + std::string(r[0]) + " needs two coordinates and an attribute (expected: index x y attribute [maximum area])";
+        return false;
+      }
+      double x = 0, y = 0;
+      std::string problem;
+      if(!read_coordinate(r[1], x, problem, [&]() { return "the x coordinate of region " + std::string(r[0]); }) ||
+         !read_coordinate(r[2], y, problem, [&]() { return "the y coordinate of region " + std::string(r[0]); })) {
+        msg = r.here() + problem;
+        return false;
+      }
+      if(r.size() > 5) { msg = r.here() + "unexpected text " + quote(r[5]) + " after region " + std::string(r[0]); return false; }
+      for(std::size_t t = 3; t < r.size(); ++t) {
+        double value = 0;
+        if(!parse_double(r[t], value)) {
+          msg = r.here() + "expected a number for the " + (t == 3 ? "attribute" : "maximum area") + " of region " +
+                std::string(r[0]) + ", found " + quote(r[t]);
+          return false;
+        }
+      }
+    }
+    if(r.next()) {
+      msg = r.here() + "unexpected text " + quote(r[0]) + " after the last section (the regional attributes, header line " +
+            std::to_string(region_header_line) + ")";
+      return false;
+    }
+  }
 
   append_points<K>(v.xy, out.points);
   out.segments = std::move(segs);
@@ -200,10 +265,13 @@ inline std::string node_file_beside(const std::string& poly_file)
 /// Sections: vertices (`<#vertices> [<dimension=2> [<#attributes> [<#markers (0|1)>]]]`, then
 /// `<index> <x> <y> [attributes...] [marker]`), segments (`<#segments> [<#markers>]`, then
 /// `<index> <a> <b> [marker]`), holes (`<#holes>`, then `<index> <x> <y>`). An optional
-/// regional-attributes section after the holes is ignored. `#` starts a comment. Vertex
+/// regional-attributes section after the holes (`<#regions>`, then `<index> <x> <y>
+/// <attribute> [<maximum area>]`) is checked and ignored; anything after it, or after the
+/// holes if it is absent, is an error. `#` starts a comment. Vertex
 /// indices are consecutive from 0 or 1: the first vertex decides, as in Triangle, and segment
 /// endpoints use the same base; segment and hole numbers are consecutive from 0 or 1 too.
-/// Missing attributes and markers default to 0 (as in Triangle); extra tokens are errors.
+/// A vertex or segment line holds exactly the attributes and marker its header announces:
+/// Triangle defaults missing ones to 0, here a short line is an error, as is an extra token.
 /// A `.poly` listing 0 vertices takes them from the `.node` file beside it, which only the
 /// file-name overload can do.
 ///
