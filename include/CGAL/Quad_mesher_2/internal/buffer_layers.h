@@ -39,7 +39,8 @@
 //    that needs a fan of three (it is the fan's room). The vertices around are searched again.
 // 3. First buffer layer (§4.5): B's first buffer point F lies halfway (in distance to the
 //    boundary) between B and the boundary, along the mean of the bisector of beta and the
-//    direction to the nearest boundary point; each F then moves alone to improve its two
+//    direction to the nearest boundary point, turned back towards the bisector where B's two
+//    first-layer angles would leave [45°, 135°]; each F then moves alone to improve its two
 //    first-layer quads and its two projection quads (smooth_first_points). Quads
 //    B_i F_i F_{i+1} B_{i+1}.
 // 4. Second buffer layer (§4.6): F_i is projected onto its boundary loop; the projections,
@@ -546,7 +547,21 @@ public:
         // halfway between the bisector of beta and the direction to the nearest boundary
         // point: bisectors alone converge in the core's notches and cross
         const Point_2d bis = right_bisector(a, b, nb);
-        const Point_2d d = normalized_2d(Point_2d{ 0.5 * (bis.x + toward.x), 0.5 * (bis.y + toward.y) });
+        Point_2d d = normalized_2d(Point_2d{ 0.5 * (bis.x + toward.x), 0.5 * (bis.y + toward.y) });
+        // but no farther from the bisector than leaves B's two first-layer angles, beta / 2
+        // plus and minus the deviation, within [45, 135] with a fifth to spare (Lemma 3: the
+        // nearest boundary point across a narrow channel turned a tongue tip's F point until
+        // its quad had 164 degrees at B). A notch of 90 degrees or less (beside a sharp
+        // corner, where Lemma 2 failed) has no such room: on its bisector alone its F point
+        // and its neighbours' crossed (the guitar's (11.53, 7.93)).
+        const double pi = 3.14159265358979323846;
+        const double beta = right_side_angle(a, b, nb) * pi / 180;
+        const double limit = 0.8 * (std::min)(beta / 2 - pi / 4, 3 * pi / 4 - beta / 2);
+        const double dev = std::atan2(cross_2d(bis, d), dot_2d(bis, d));
+        if(limit > 0 && std::abs(dev) > limit) {
+          const double t = dev > 0 ? limit : -limit;
+          d = Point_2d{ bis.x * std::cos(t) - bis.y * std::sin(t), bis.x * std::sin(t) + bis.y * std::cos(t) };
+        }
         const double c_dn = (std::max)(dot_2d(d, toward), 0.5);
         const double lambda = 0.5 * h.dist / c_dn;
         F[i] = Point_2d{b.x + lambda * d.x, b.y + lambda * d.y};
