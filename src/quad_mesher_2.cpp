@@ -20,12 +20,14 @@
 #include <chrono>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <string>
 #include <vector>
+#include <unistd.h>
 
 namespace QM = CGAL::Quad_mesher_2;
 
@@ -53,6 +55,42 @@ struct Options
 };
 
 const std::vector<std::string> output_extensions = { ".msh", ".vtu", ".off", ".svg" };
+
+// The outputs are written beside their targets under hidden names (the same extension, which
+// picks the format) and renamed into place together once all are written: a run that fails
+// to write one leaves none, and the files that were there before untouched.
+class Staged_outputs
+{
+public:
+  // the name to write `target` under for now
+  std::string add(const std::string& target)
+  {
+    const std::filesystem::path t(target);
+    const std::filesystem::path part = t.parent_path() / ("." + t.filename().string() + ".partial-"
+                                                           + std::to_string(::getpid()) + t.extension().string());
+    m_files.emplace_back(part.string(), target);
+    return m_files.back().first;
+  }
+  // renames every file into place; on failure the name of the target that failed
+  std::string commit()
+  {
+    for(auto& [part, target] : m_files) {
+      std::error_code ec;
+      std::filesystem::rename(part, target, ec);
+      if(ec) return target;
+      part.clear();
+    }
+    return {};
+  }
+  ~Staged_outputs()
+  {
+    for(const auto& f : m_files)
+      if(!f.first.empty()) std::remove(f.first.c_str());
+  }
+
+private:
+  std::vector<std::pair<std::string, std::string>> m_files; // (written now, target)
+};
 const QM::Stage all_stages[] = { QM::Stage::QUADTREE, QM::Stage::POINTS, QM::Stage::CLEARANCE,
                                  QM::Stage::TEMPLATES, QM::Stage::BUFFER1, QM::Stage::BUFFER2 };
 
@@ -152,15 +190,15 @@ int run(const Options& opt)
     segments.emplace_back(domain.points[s[0]], domain.points[s[1]]);
 
   t = Clock::now();
+  Staged_outputs staged;
   for(const std::string& out : opt.outputs) {
-    const bool written = QM::IO::file_extension(out) == ".svg" ? QM::IO::write_SVG(out, mesh, segments)
-                                                     : QM::IO::write_quad_mesh(out, mesh);
+    const std::string part = staged.add(out);
+    const bool written = QM::IO::file_extension(out) == ".svg" ? QM::IO::write_SVG(part, mesh, segments)
+                                                     : QM::IO::write_quad_mesh(part, mesh);
     if(!written) {
       std::cerr << "quad-mesher: cannot write " << out << "\n";
       return 1;
     }
-    if(opt.verbose)
-      std::cerr << "wrote " << out << "\n";
   }
   seconds["write"] = seconds_since(t);
   seconds["total"] = seconds_since(start);
@@ -228,13 +266,20 @@ int run(const Options& opt)
   report["seconds"] = seconds;
 
   if(!opt.report.empty()) {
-    std::ofstream out(opt.report);
+    std::ofstream out(staged.add(opt.report));
     out << report.dump(2) << "\n";
+    out.close();
     if(!out) {
       std::cerr << "quad-mesher: cannot write " << opt.report << "\n";
       return 1;
     }
   }
+  if(const std::string failed = staged.commit(); !failed.empty()) {
+    std::cerr << "quad-mesher: cannot write " << failed << "\n";
+    return 1;
+  }
+  if(opt.verbose)
+    for(const std::string& out : opt.outputs) std::cerr << "wrote " << out << "\n";
   std::cout << quality.number_of_quads << " quads, " << quality.number_of_vertices
             << " vertices, angles [" << quality.min_angle << ", " << quality.max_angle
             << "] deg, quadtree depth " << tree.depth() << ", " << seconds["total"].get<double>()

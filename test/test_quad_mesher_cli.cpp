@@ -148,6 +148,29 @@ TEST(quad_mesher_cli, never_overwrites_the_input_and_refuses_directories)
   EXPECT_NE(r.err.find("is a directory"), std::string::npos) << r.err;
 }
 
+// A run that cannot write one of its outputs writes none: the files already there stay as
+// they were, and no partial file is left beside them.
+TEST(quad_mesher_cli, an_output_that_cannot_be_written_leaves_the_others_untouched)
+{
+  auto m = scratch("untouched.msh"), svg = scratch("untouched.svg"), json = scratch("untouched.json");
+  std::ofstream(m) << "kept\n";
+  std::filesystem::remove(svg);
+  std::filesystem::remove(json);
+  const std::string nowhere = (scratch("no_such_dir") / "out.vtu").string();
+  Cli_run r = run(lake + " -o " + m.string() + " -o " + svg.string() + " -o " + nowhere + " --report " + json.string());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("cannot write " + nowhere), std::string::npos) << r.err;
+  EXPECT_EQ(slurp(m), "kept\n");
+  EXPECT_FALSE(std::filesystem::exists(svg));
+  EXPECT_FALSE(std::filesystem::exists(json));
+  for(const auto& e : std::filesystem::directory_iterator(m.parent_path()))
+    EXPECT_NE(e.path().filename().string().rfind(".untouched.", 0), 0u) << e.path(); // ours, hidden
+  r = run(lake + " -o " + m.string() + " -o " + svg.string() + " --report " + json.string());
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(slurp(m), "kept\n");
+  EXPECT_TRUE(std::filesystem::exists(svg) && std::filesystem::exists(json));
+}
+
 TEST(quad_mesher_cli, cell_budget_stops_huge_meshes_cleanly)
 {
   Cli_run r = run(lake + " -o " + scratch("big.msh").string() + " --stop-after quadtree --max-size 1e-5 --max-cells 100000");
