@@ -62,13 +62,17 @@ const std::vector<std::string> output_extensions = { ".msh", ".vtu", ".off", ".s
 class Staged_outputs
 {
 public:
-  // the name to write `target` under for now
+  // the name to write `target` under for now (a symbolic link's file, not the link, is
+  // replaced)
   std::string add(const std::string& target)
   {
-    const std::filesystem::path t(target);
+    std::error_code ec;
+    const std::filesystem::path t = std::filesystem::is_symlink(target, ec) ? std::filesystem::weakly_canonical(target, ec)
+                                                                             : std::filesystem::path(target);
     const std::filesystem::path part = t.parent_path() / ("." + t.filename().string() + ".partial-"
-                                                           + std::to_string(::getpid()) + t.extension().string());
-    m_files.emplace_back(part.string(), target);
+                                                           + std::to_string(::getpid())
+                                                           + std::filesystem::path(target).extension().string());
+    m_files.emplace_back(part.string(), t.string());
     return m_files.back().first;
   }
   // renames every file into place; on failure the name of the target that failed
@@ -77,7 +81,7 @@ public:
     for(auto& [part, target] : m_files) {
       std::error_code ec;
       std::filesystem::rename(part, target, ec);
-      if(ec) return target;
+      if(ec) return target; // as resolved: the name the user gave may be a link to it
       part.clear();
     }
     return {};

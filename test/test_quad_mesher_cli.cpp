@@ -169,6 +169,15 @@ TEST(quad_mesher_cli, an_output_that_cannot_be_written_leaves_the_others_untouch
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_NE(slurp(m), "kept\n");
   EXPECT_TRUE(std::filesystem::exists(svg) && std::filesystem::exists(json));
+  // an output named by a symbolic link is written into the file it points to
+  auto link = scratch("untouched_link.msh"), real = scratch("untouched_real.dat");
+  std::filesystem::remove(link);
+  std::ofstream(real) << "old\n";
+  std::filesystem::create_symlink(real, link);
+  r = run(lake + " -o " + link.string());
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::is_symlink(link));
+  EXPECT_EQ(slurp(real).rfind("$MeshFormat", 0), 0u);
 }
 
 TEST(quad_mesher_cli, cell_budget_stops_huge_meshes_cleanly)
