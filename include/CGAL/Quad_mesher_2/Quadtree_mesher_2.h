@@ -26,6 +26,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -285,6 +286,7 @@ public:
     // building it again would cost a whole round
     Round_state best;
     for(m_rounds = 1;; ++m_rounds) {
+      const auto round_start = std::chrono::steady_clock::now();
       build_quadtree();
       Mesh mesh = core_mesh();
       if(last >= Stage::POINTS && m_criteria.points_as_vertices())
@@ -320,8 +322,11 @@ public:
                          && quality.is_valid() && quality.number_of_near_duplicate_vertices == 0;
       // refined for validity first; for angles only once a round is valid
       const auto& requests = valid ? m_buffer_report.angle_requests : m_buffer_report.refine_requests;
-      m_round_figures.push_back({ mesh.quads.size(), m_buffer_report.invalid_quads,
-                                  m_buffer_report.bad_angle_quads, valid, requests.size() });
+      m_round_figures.push_back({ m_rounds, mesh.quads.size(), m_buffer_report.invalid_quads,
+                                  m_buffer_report.bad_angle_quads, valid, requests.size(),
+                                  std::chrono::duration<double>(std::chrono::steady_clock::now() - round_start).count() });
+      if(m_round_observer)
+        m_round_observer(m_round_figures.back());
       // a stage on its way is not refined for angles: they are the finished buffer's
       if(valid && (m_buffer_report.bad_angle_quads == 0 || last < Stage::BUFFER2))
         return mesh;
@@ -362,15 +367,23 @@ public:
   /// what one round of `run()` past the clearance found: how it went decides the next
   struct Round_figures
   {
+    int round = 0;                    ///< its number among the rounds of `run()` (see `rounds()`)
     std::size_t quads = 0;
     std::size_t invalid_quads = 0;    ///< buffer quads not strictly convex
     std::size_t bad_angle_quads = 0;  ///< buffer quads with an angle out that no input corner forces
     bool valid = false;               ///< the whole mesh passed its check
     std::size_t refinement_requests = 0; ///< places it asked to be finer (for validity, or angles once valid)
+    double seconds = 0;               ///< its wall-clock time, from the quadtree to the whole-mesh check
   };
   /// the rounds of the last `run()` past the clearance, in order (the one returned may be an
   /// earlier one than the last: see `run()`)
   const std::vector<Round_figures>& round_figures() const { return m_round_figures; }
+  /// called by `run()` as each round past the clearance ends, with its figures (the entry it
+  /// has just added to `round_figures()`), before it decides whether to refine again
+  typedef std::function<void(const Round_figures&)> Round_observer;
+  /// sets the round observer (an empty one, the default, is not called): rounds can take
+  /// minutes each on a hard input, and `round_figures()` is read only after `run()` returns
+  void set_round_observer(Round_observer observer) { m_round_observer = std::move(observer); }
   /// what the buffer stages did in the last round
   const internal::Buffer_report& buffer_report() const { return m_buffer_report; }
   static constexpr int max_refinement_rounds = 16;
@@ -815,6 +828,7 @@ private:
   std::vector<std::size_t> m_point_names; // the input index of each anchored point
   int m_rounds = 0;
   std::vector<Round_figures> m_round_figures;
+  Round_observer m_round_observer;
   Timings m_timings;
 };
 
