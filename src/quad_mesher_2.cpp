@@ -120,6 +120,15 @@ double seconds_since(std::chrono::steady_clock::time_point start)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// one refinement round as -v prints it, when it ends
+template <class Figures>
+void print_round(std::ostream& out, const Figures& f)
+{
+  out << "round " << f.round << ": " << f.quads << " quads, " << (f.valid ? "valid" : "invalid") << ", "
+      << f.invalid_quads << " buffer quads not convex, " << f.bad_angle_quads << " with an unforced angle out, "
+      << f.refinement_requests << " refinement requests, " << f.seconds << " s" << std::endl;
+}
+
 template <class K>
 int run(const Options& opt)
 {
@@ -166,6 +175,8 @@ int run(const Options& opt)
   // the quadtree stage alone does not refine for point insertion
   criteria.set_points_as_vertices(last != QM::Stage::QUADTREE);
   QM::Quadtree_mesher_2<K> mesher(domain, criteria);
+  if(opt.verbose) // as they end: a hard input can take minutes a round
+    mesher.set_round_observer([](const auto& f) { print_round(std::cerr, f); });
   QM::Quad_mesh_2<typename K::Point_2> mesh = mesher.run(last);
   if(mesher.number_of_merged_points() > 0)
     std::cerr << "quad-mesher: " << opt.input << ": merged " << mesher.number_of_merged_points()
@@ -176,13 +187,6 @@ int run(const Options& opt)
       std::cerr << "stage " << stage.first << ": " << stage.second << " s\n";
   }
 
-  if(opt.verbose)
-    for(std::size_t r = 0; r < mesher.round_figures().size(); ++r) {
-      const auto& f = mesher.round_figures()[r];
-      std::cerr << "round " << r + 1 << ": " << f.quads << " quads, " << (f.valid ? "valid" : "invalid") << ", "
-                << f.invalid_quads << " buffer quads not convex, " << f.bad_angle_quads
-                << " with an unforced angle out, " << f.refinement_requests << " refinement requests\n";
-    }
   // runs past the clearance checked the whole mesh already (stage "check")
   t = Clock::now();
   const QM::Mesh_quality_2 quality = mesher.quality() ? *mesher.quality() : QM::compute_quality(mesh);

@@ -1369,6 +1369,74 @@ TEST(Buffer_layers, the_returned_round_is_the_mesher_state)
   EXPECT_FALSE(mesher.quality().has_value());
 }
 
+// Each round builds the quadtree anew with the requests of every round before it: a round
+// whose requests split no cell (finer cells refused) is repeated, figure for figure, by every
+// round after it. The rounds end there, with the error the 16th would give (a 128-gon hole
+// 1e-7 from the side of a unit square repeated its seventh round nine times, 27 s each: 350 s,
+// now 119 s). Here a square hole 0.01 above the bottom of a unit square, narrow regions left
+// unresolved and at most depth 7: no core is left between them, and the fourth round (1484
+// quads) was repeated twelve times.
+TEST(Buffer_layers, the_rounds_end_when_their_refinement_splits_no_cell)
+{
+  const Domain d = polygons({ rectangle(0, 0, 1, 1), { Point(0.3, 0.01), Point(0.3, 0.5), Point(0.7, 0.5), Point(0.7, 0.01) } },
+                            { Point(0.5, 0.25) });
+  QM::Mesh_criteria_2<K> criteria(0, 0, 7);
+  criteria.set_resolve_narrow_regions(false);
+  Mesher mesher(d, criteria);
+  std::string error;
+  try {
+    mesher.run(Stage::BUFFER2);
+  } catch(const QM::Meshing_error& e) {
+    error = e.what();
+  }
+  EXPECT_NE(error.find("no core mesh is left near loop 1"), std::string::npos) << error;
+  EXPECT_NE(error.find("after 4 refinement rounds; finer cells are refused there: the maximum depth 7"), std::string::npos)
+    << error;
+  EXPECT_EQ(mesher.rounds(), 4);
+  ASSERT_EQ(mesher.round_figures().size(), 4u);
+  EXPECT_EQ(mesher.round_figures().back().quads, 1484u);
+  EXPECT_FALSE(mesher.round_figures().back().valid);
+}
+
+// The round observer sees each round as it ends (the tool's -v prints them so: a hard input
+// can take minutes a round), once per round, with the figures round_figures() keeps
+// (naca0012_sharp takes three rounds)
+TEST(Buffer_layers, the_round_observer_sees_every_round_as_it_ends)
+{
+  const Domain d = load("naca0012/naca0012_sharp.poly");
+  Mesher mesher(d);
+  std::vector<Mesher::Round_figures> seen;
+  mesher.set_round_observer([&](const Mesher::Round_figures& f) {
+    EXPECT_EQ(mesher.round_figures().size(), seen.size() + 1); // the round just ended
+    EXPECT_EQ(&f, &mesher.round_figures().back());
+    EXPECT_EQ(mesher.rounds(), f.round);
+    seen.push_back(f);
+  });
+  mesher.run(Stage::BUFFER2);
+  const std::vector<Mesher::Round_figures> figures = mesher.round_figures(); // the next run() clears them
+  ASSERT_GE(figures.size(), 2u);
+  ASSERT_EQ(seen.size(), figures.size());
+  EXPECT_EQ(int(seen.size()), mesher.rounds());
+  for(std::size_t r = 0; r < seen.size(); ++r) {
+    SCOPED_TRACE("round " + std::to_string(r + 1));
+    EXPECT_EQ(seen[r].round, int(r + 1));
+    EXPECT_EQ(seen[r].quads, figures[r].quads);
+    EXPECT_EQ(seen[r].invalid_quads, figures[r].invalid_quads);
+    EXPECT_EQ(seen[r].bad_angle_quads, figures[r].bad_angle_quads);
+    EXPECT_EQ(seen[r].valid, figures[r].valid);
+    EXPECT_EQ(seen[r].refinement_requests, figures[r].refinement_requests);
+    EXPECT_EQ(seen[r].seconds, figures[r].seconds);
+    EXPECT_GT(seen[r].seconds, 0.0);
+  }
+  // an empty observer is not called; a run without rounds past the clearance calls none
+  mesher.set_round_observer(Mesher::Round_observer());
+  mesher.run(Stage::BUFFER2);
+  EXPECT_EQ(seen.size(), figures.size());
+  mesher.set_round_observer([&](const Mesher::Round_figures& f) { seen.push_back(f); });
+  mesher.run(Stage::CLEARANCE);
+  EXPECT_EQ(seen.size(), figures.size());
+}
+
 // The refinement template of the cell [0, 4]^2 (four corner squares and eight kites with 45
 // degrees at the centre (2, 2)) without its upper-left quadrant: the centre is a notch of the
 // core whose core angles are all 45 degrees, as Lake Superior's (0.8877, -0.6432) was.

@@ -359,6 +359,26 @@ TEST(quad_mesher_cli, help_lists_every_option_and_verbose_prints_stages)
     EXPECT_NE(r.err.find(stage), std::string::npos) << stage;
 }
 
+// -v prints each refinement round, as it ends (Lake Superior takes four)
+TEST(quad_mesher_cli, verbose_prints_each_round)
+{
+  auto json = scratch("rounds.json");
+  Cli_run r = run(lake + " -o " + scratch("rounds.off").string() + " --verbose --report " + json.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const int rounds = nlohmann::json::parse(slurp(json))["buffer"]["refinement_rounds"].get<int>() + 1;
+  ASSERT_GE(rounds, 2);
+  for(int k = 1; k <= rounds; ++k) {
+    const std::size_t at = r.err.find("round " + std::to_string(k) + ": ");
+    ASSERT_NE(at, std::string::npos) << k << "\n" << r.err;
+    const std::string line = r.err.substr(at, r.err.find('\n', at) - at);
+    for(const char* part : { " quads, ", "valid, ", " buffer quads not convex, ", " with an unforced angle out, ",
+                             " refinement requests, " })
+      EXPECT_NE(line.find(part), std::string::npos) << part << " in " << line;
+    EXPECT_EQ(line.substr(line.size() - 2), " s") << line;
+  }
+  EXPECT_EQ(r.err.find("round " + std::to_string(rounds + 1) + ": "), std::string::npos) << r.err;
+}
+
 } // namespace qm2_test_cli
 
 #endif // QM2_CLI_PATH

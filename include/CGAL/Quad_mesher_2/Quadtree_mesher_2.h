@@ -26,6 +26,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -274,18 +275,37 @@ public:
   /// forces, the quadtree is refined there, round after round while their count falls and in
   /// at most `max_stalled_angle_rounds` valid rounds that do not lower it; a round the angle refinement made invalid is
   /// refined for validity first. The valid round with the fewest such quads is the one
-  /// returned (kept from its round if a later one was worse).
+  /// returned (kept from its round if a later one was worse). The rounds end too once the
+  /// refinement a round asked for splits no cell (finer cells are refused there): the next
+  /// round would repeat it.
   Mesh run(Stage last = Stage::POINTS)
   {
     m_extra_refinement.clear();
+    m_requests_applied = 0;
     m_round_figures.clear();
     m_quality.reset();
     internal::Angle_rounds angle_rounds(max_stalled_angle_rounds);
     // the best valid round's mesh and state, kept while later rounds try for better angles:
     // building it again would cost a whole round
     Round_state best;
+    // the error that ends the rounds if the next one repeats the last, an invalid one
+    std::string repeat_error;
     for(m_rounds = 1;; ++m_rounds) {
+      const auto round_start = std::chrono::steady_clock::now();
       build_quadtree();
+      // Each round builds the quadtree anew, the same way, with the requests of every round
+      // before it: if the last round's requests split no cell (finer cells refused), this
+      // round repeats the last, figure for figure, and so would every round after it, to the
+      // budget (a 128-gon hole 1e-7 from the side of a square repeated its seventh round nine
+      // times, 27 s each). The last round's outcome is final: an invalid one ends here (its
+      // mesh is not kept, nor needed); a valid one is run again and kept, or not, as usual.
+      const bool repeats = m_rounds > 1 && !m_requests_refined;
+      if(repeats && !repeat_error.empty()) {
+        --m_rounds;
+        if(angle_rounds.has_valid_round())
+          return restore_round(std::move(best));
+        throw Meshing_error(repeat_error);
+      }
       Mesh mesh = core_mesh();
       if(last >= Stage::POINTS && m_criteria.points_as_vertices())
         insert_points(mesh);
@@ -298,16 +318,13 @@ public:
           const internal::Point_2d p = internal::to_point_2d(m_anchored_points[i]);
           requests.emplace_back(p, locator->closest(p, m_tree->cell_side(m_tree->depth())).dist / 2);
         }
-        if(queue_refinement(requests) > 0 && m_rounds < max_refinement_rounds)
+        if(queue_refinement(requests) > 0 && m_rounds < max_refinement_rounds) {
+          repeat_error = lost_point_error(requests);
           continue;
+        }
         if(angle_rounds.has_valid_round())
           return restore_round(std::move(best));
-        std::ostringstream msg;
-        msg << "isolated point " << input_point_name(m_point_names[m_lost_points.front()]) << " (" << requests.front().first.x
-            << ", " << requests.front().first.y << ") lies " << 2 * requests.front().second
-            << " from the boundary: cells small enough to keep it a vertex inside the core are beyond the "
-            << "quadtree's depth or its refinement rounds (" << m_rounds << ")";
-        throw Meshing_error(msg.str());
+        throw Meshing_error(lost_point_error(requests));
       }
       if(last <= Stage::CLEARANCE)
         return mesh;
@@ -320,37 +337,30 @@ public:
                          && quality.is_valid() && quality.number_of_near_duplicate_vertices == 0;
       // refined for validity first; for angles only once a round is valid
       const auto& requests = valid ? m_buffer_report.angle_requests : m_buffer_report.refine_requests;
-      m_round_figures.push_back({ mesh.quads.size(), m_buffer_report.invalid_quads,
-                                  m_buffer_report.bad_angle_quads, valid, requests.size() });
+      m_round_figures.push_back({ m_rounds, mesh.quads.size(), m_buffer_report.invalid_quads,
+                                  m_buffer_report.bad_angle_quads, valid, requests.size(),
+                                  std::chrono::duration<double>(std::chrono::steady_clock::now() - round_start).count() });
+      if(m_round_observer)
+        m_round_observer(m_round_figures.back());
       // a stage on its way is not refined for angles: they are the finished buffer's
       if(valid && (m_buffer_report.bad_angle_quads == 0 || last < Stage::BUFFER2))
         return mesh;
       const bool improved = angle_rounds.record(valid, m_buffer_report.bad_angle_quads);
       const std::size_t added = queue_refinement(requests);
       // an angle round that came out invalid is refined for validity, within the round budget
-      if(added > 0 && m_rounds < max_refinement_rounds && angle_rounds.go_on()) {
+      if(added > 0 && m_rounds < max_refinement_rounds && angle_rounds.go_on() && !repeats) {
         if(improved)
           best = save_round(std::move(mesh));
+        // should the next round repeat this one, it fails as this one would fail now
+        repeat_error = valid ? std::string() : buffer_error(requests, true);
         continue;
       }
       if(valid && m_buffer_report.bad_angle_quads == angle_rounds.best())
         return mesh; // angles outside [45, 135] stay; the quality report shows them
       if(angle_rounds.has_valid_round())
         return restore_round(std::move(best));
-      std::ostringstream msg;
-      msg << "the buffer layers could not be built";
-      if(!m_buffer_report.failure.empty())
-        msg << ": " << m_buffer_report.failure;
-      else if(m_buffer_report.invalid_quads > 0)
-        msg << ": " << m_buffer_report.invalid_quads << " buffer quads are not convex";
-      else
-        msg << ": the mesh has a hanging node, a non-manifold edge or two vertices closer than 1e-9 of its diagonal";
-      if(!requests.empty())
-        msg << ", near (" << requests.front().first.x << ", " << requests.front().first.y << ")";
-      msg << ", after " << m_rounds << " refinement rounds";
-      if(added < requests.size() || m_tree->depth() >= m_tree->max_depth()) // not the round budget
-        msg << "; finer cells are refused there: " << m_tree->depth_limit();
-      throw Meshing_error(msg.str());
+      // not the round budget
+      throw Meshing_error(buffer_error(requests, added < requests.size() || m_tree->depth() >= m_tree->max_depth()));
     }
   }
 
@@ -362,15 +372,23 @@ public:
   /// what one round of `run()` past the clearance found: how it went decides the next
   struct Round_figures
   {
+    int round = 0;                    ///< its number among the rounds of `run()` (see `rounds()`)
     std::size_t quads = 0;
     std::size_t invalid_quads = 0;    ///< buffer quads not strictly convex
     std::size_t bad_angle_quads = 0;  ///< buffer quads with an angle out that no input corner forces
     bool valid = false;               ///< the whole mesh passed its check
     std::size_t refinement_requests = 0; ///< places it asked to be finer (for validity, or angles once valid)
+    double seconds = 0;               ///< its wall-clock time, from the quadtree to the whole-mesh check
   };
   /// the rounds of the last `run()` past the clearance, in order (the one returned may be an
   /// earlier one than the last: see `run()`)
   const std::vector<Round_figures>& round_figures() const { return m_round_figures; }
+  /// called by `run()` as each round past the clearance ends, with its figures (the entry it
+  /// has just added to `round_figures()`), before it decides whether to refine again
+  typedef std::function<void(const Round_figures&)> Round_observer;
+  /// sets the round observer (an empty one, the default, is not called): rounds can take
+  /// minutes each on a hard input, and `round_figures()` is read only after `run()` returns
+  void set_round_observer(Round_observer observer) { m_round_observer = std::move(observer); }
   /// what the buffer stages did in the last round
   const internal::Buffer_report& buffer_report() const { return m_buffer_report; }
   static constexpr int max_refinement_rounds = 16;
@@ -454,6 +472,38 @@ private:
     m_buffer_report = std::move(r.buffer_report);
     m_quality = std::move(r.quality);
     return std::move(r.mesh);
+  }
+
+  // why the last round's buffer is invalid, where, and after how many rounds; `refused`: the
+  // quadtree refused finer cells there
+  std::string buffer_error(const std::vector<std::pair<internal::Point_2d, double>>& requests, bool refused) const
+  {
+    std::ostringstream msg;
+    msg << "the buffer layers could not be built";
+    if(!m_buffer_report.failure.empty())
+      msg << ": " << m_buffer_report.failure;
+    else if(m_buffer_report.invalid_quads > 0)
+      msg << ": " << m_buffer_report.invalid_quads << " buffer quads are not convex";
+    else
+      msg << ": the mesh has a hanging node, a non-manifold edge or two vertices closer than 1e-9 of its diagonal";
+    if(!requests.empty())
+      msg << ", near (" << requests.front().first.x << ", " << requests.front().first.y << ")";
+    msg << ", after " << m_rounds << " refinement rounds";
+    if(refused)
+      msg << "; finer cells are refused there: " << m_tree->depth_limit();
+    return msg.str();
+  }
+
+  // the first isolated point the last round lost (see lost_points()), `requests` the
+  // refinement asked around each
+  std::string lost_point_error(const std::vector<std::pair<internal::Point_2d, double>>& requests) const
+  {
+    std::ostringstream msg;
+    msg << "isolated point " << input_point_name(m_point_names[m_lost_points.front()]) << " (" << requests.front().first.x
+        << ", " << requests.front().first.y << ") lies " << 2 * requests.front().second
+        << " from the boundary: cells small enough to keep it a vertex inside the core are beyond the "
+        << "quadtree's depth or its refinement rounds (" << m_rounds << ")";
+    return msg.str();
   }
 
   void record(const std::string& stage, std::chrono::steady_clock::time_point start)
@@ -732,11 +782,16 @@ private:
   // are at core vertices, lattice points with four cells around them, and the poor buffer
   // quads may lie in any of them (refining only the cell up and right of the point left a
   // buffer quad invalid round after round).
+  // Records whether the requests queued since the last build split a cell.
   void refine_at_requests()
   {
     auto make_point = m_traits.construct_point_2_object();
     const double delta = m_tree->cell_side(m_tree->max_depth()) / 2;
-    for(const auto& r : m_extra_refinement) {
+    std::size_t leaves_before_new = 0;
+    for(std::size_t i = 0; i < m_extra_refinement.size(); ++i) {
+      if(i == m_requests_applied)
+        leaves_before_new = m_tree->number_of_leaves();
+      const auto& r = m_extra_refinement[i];
       std::array<Point_2, 4> around;
       std::size_t n = 0;
       for(int c = 0; c < 4; ++c) {
@@ -750,6 +805,9 @@ private:
       if(level > m_tree->max_depth()) continue;
       for(std::size_t k = 0; k < n; ++k) m_tree->refine_at(around[k], level);
     }
+    m_requests_refined = m_requests_applied < m_extra_refinement.size()
+                         && m_tree->number_of_leaves() > leaves_before_new;
+    m_requests_applied = m_extra_refinement.size();
   }
 
   // Queues refinement at each request (a point and the local size there: cells of half that
@@ -809,12 +867,15 @@ private:
   std::vector<std::size_t> m_point_vertices;
   std::vector<double> m_core_vertex_size;       // largest cell side at each core vertex
   std::vector<std::pair<internal::Point_2d, double>> m_extra_refinement; // (point, local size)
+  std::size_t m_requests_applied = 0; // of m_extra_refinement, by the last build_quadtree()
+  bool m_requests_refined = false;    // whether those it applied first split a cell
   internal::Buffer_report m_buffer_report;
   std::optional<Mesh_quality_2> m_quality;
   std::vector<std::size_t> m_lost_points; // by anchored point: see clear_buffer_zone()
   std::vector<std::size_t> m_point_names; // the input index of each anchored point
   int m_rounds = 0;
   std::vector<Round_figures> m_round_figures;
+  Round_observer m_round_observer;
   Timings m_timings;
 };
 
