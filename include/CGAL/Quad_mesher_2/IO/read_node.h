@@ -341,6 +341,34 @@ struct Vertex_list
 
 inline std::string base_name(std::size_t base) { return base == 0 ? "0-based" : "1-based"; }
 
+/// Moves `r` to line `i` (from 0) of a section of `count` indexed lines, announced by
+/// `header` on line `header_line`: the line must be there and start with the index
+/// `base + i`, `base` (0 or 1) being set by the first line. `what` names one line's item
+/// ("vertex"), `items` several; with `name_base` an index out of sequence is reported with
+/// the numbering the section uses.
+inline bool next_indexed_line(Text_lines& r, std::size_t i, std::size_t count, std::size_t& base, const std::string& what,
+                              const std::string& items, const std::string& header, std::size_t header_line,
+                              bool name_base, std::string& msg)
+{
+  if(!r.next()) {
+    msg = r.where(r.end_line()) + "unexpected end of file: " + header + " (line " + std::to_string(header_line) +
+          ") announces " + std::to_string(count) + " " + items + ", but only " + std::to_string(i) + " were found";
+    return false;
+  }
+  long long idx = 0;
+  if(!parse_integer(r[0], idx)) { msg = r.here() + "expected an integer " + what + " index, found " + quote(r[0]); return false; }
+  if(i == 0) {
+    if(idx != 0 && idx != 1) { msg = r.here() + "the first " + what + " index must be 0 or 1, found " + std::string(r[0]); return false; }
+    base = static_cast<std::size_t>(idx);
+  } else if(idx != static_cast<long long>(i + base)) {
+    msg = r.here() + what + " index " + std::string(r[0]) + " out of sequence: expected " + std::to_string(i + base) +
+          " (indices must be consecutive" + (name_base ? ", " + base_name(base) : std::string()) +
+          "; an index was skipped or repeated)";
+    return false;
+  }
+  return true;
+}
+
 // How messages after reading name the item of each line: its number in the file (from
 // `base`) and its line, in `file` if that is not the file being read.
 inline std::vector<std::string> file_labels(std::size_t base, const std::vector<std::size_t>& lines,
@@ -391,21 +419,8 @@ inline bool read_vertex_section(Text_lines& r, Vertex_list& out, long long& coun
   const std::size_t line_tokens = 3 + static_cast<std::size_t>((std::min)(nattr, static_cast<long long>(r.text().size()))) +
                                   static_cast<std::size_t>(nmark);
   for(std::size_t i = 0; i < n; ++i) {
-    if(!r.next()) {
-      msg = r.where(r.end_line()) + "unexpected end of file: the header (line " + std::to_string(out.header_line) +
-            ") announces " + std::to_string(n) + " vertices, but only " + std::to_string(i) + " were found";
+    if(!next_indexed_line(r, i, n, out.base, "vertex", "vertices", "the header", out.header_line, true, msg))
       return false;
-    }
-    long long idx = 0;
-    if(!parse_integer(r[0], idx)) { msg = r.here() + "expected an integer vertex index, found " + quote(r[0]); return false; }
-    if(i == 0) {
-      if(idx != 0 && idx != 1) { msg = r.here() + "the first vertex index must be 0 or 1, found " + std::string(r[0]); return false; }
-      out.base = static_cast<std::size_t>(idx);
-    } else if(idx != static_cast<long long>(i + out.base)) {
-      msg = r.here() + "vertex index " + std::string(r[0]) + " out of sequence: expected " + std::to_string(i + out.base) +
-            " (indices must be consecutive, " + base_name(out.base) + "; an index was skipped or repeated)";
-      return false;
-    }
     auto label = [&]() { return "vertex " + std::to_string(i + out.base); };
     if(r.size() < 3) { msg = r.here() + label() + " has " + (r.size() == 1 ? "no coordinates" : "only one coordinate") + " (expected: index x y)"; return false; }
     double x = 0, y = 0;

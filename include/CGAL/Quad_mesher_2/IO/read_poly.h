@@ -66,21 +66,8 @@ bool read_poly_text(Text_lines& r, const std::string& node_file, Domain_2<K>& ou
   std::size_t seg_base = 0;
   const std::size_t line_tokens = 3 + static_cast<std::size_t>(nmark);
   for(std::size_t i = 0; i < ns; ++i) {
-    if(!r.next()) {
-      msg = r.where(r.end_line()) + "unexpected end of file: the segment header (line " + std::to_string(seg_header_line) +
-            ") announces " + std::to_string(ns) + " segments, but only " + std::to_string(i) + " were found";
+    if(!next_indexed_line(r, i, ns, seg_base, "segment", "segments", "the segment header", seg_header_line, false, msg))
       return false;
-    }
-    long long idx = 0;
-    if(!parse_integer(r[0], idx)) { msg = r.here() + "expected an integer segment index, found " + quote(r[0]); return false; }
-    if(i == 0) {
-      if(idx != 0 && idx != 1) { msg = r.here() + "the first segment index must be 0 or 1, found " + std::string(r[0]); return false; }
-      seg_base = static_cast<std::size_t>(idx);
-    } else if(idx != static_cast<long long>(i + seg_base)) {
-      msg = r.here() + "segment index " + std::string(r[0]) + " out of sequence: expected " + std::to_string(i + seg_base) +
-            " (indices must be consecutive; an index was skipped or repeated)";
-      return false;
-    }
     if(r.size() < 3) { msg = r.here() + "segment " + std::string(r[0]) + " needs two vertex indices (expected: index a b)"; return false; }
     std::array<std::size_t, 2> s;
     for(int e = 0; e < 2; ++e) {
@@ -140,21 +127,8 @@ bool read_poly_text(Text_lines& r, const std::string& node_file, Domain_2<K>& ou
   holes.reserve((std::min)(nh, cap));
   std::size_t hole_base = 0;
   for(std::size_t i = 0; i < nh; ++i) {
-    if(!r.next()) {
-      msg = r.where(r.end_line()) + "unexpected end of file: the hole header (line " + std::to_string(hole_header_line) +
-            ") announces " + std::to_string(nh) + " holes, but only " + std::to_string(i) + " were found";
+    if(!next_indexed_line(r, i, nh, hole_base, "hole", "holes", "the hole header", hole_header_line, false, msg))
       return false;
-    }
-    long long idx = 0;
-    if(!parse_integer(r[0], idx)) { msg = r.here() + "expected an integer hole index, found " + quote(r[0]); return false; }
-    if(i == 0) {
-      if(idx != 0 && idx != 1) { msg = r.here() + "the first hole index must be 0 or 1, found " + std::string(r[0]); return false; }
-      hole_base = static_cast<std::size_t>(idx);
-    } else if(idx != static_cast<long long>(i + hole_base)) {
-      msg = r.here() + "hole index " + std::string(r[0]) + " out of sequence: expected " + std::to_string(i + hole_base) +
-            " (indices must be consecutive; an index was skipped or repeated)";
-      return false;
-    }
     if(r.size() < 3) { msg = r.here() + "hole " + std::string(r[0]) + " needs two coordinates (expected: index x y)"; return false; }
     double x = 0, y = 0;
     std::string problem;
@@ -184,22 +158,9 @@ bool read_poly_text(Text_lines& r, const std::string& node_file, Domain_2<K>& ou
     const std::size_t nr = static_cast<std::size_t>(nregions);
     std::size_t region_base = 0;
     for(std::size_t i = 0; i < nr; ++i) {
-      if(!r.next()) {
-        msg = r.where(r.end_line()) + "unexpected end of file: the regional-attribute header (line " +
-              std::to_string(region_header_line) + ") announces " + std::to_string(nr) + " regions, but only " +
-              std::to_string(i) + " were found";
+      if(!next_indexed_line(r, i, nr, region_base, "region", "regions", "the regional-attribute header", region_header_line,
+                            false, msg))
         return false;
-      }
-      long long idx = 0;
-      if(!parse_integer(r[0], idx)) { msg = r.here() + "expected an integer region index, found " + quote(r[0]); return false; }
-      if(i == 0) {
-        if(idx != 0 && idx != 1) { msg = r.here() + "the first region index must be 0 or 1, found " + std::string(r[0]); return false; }
-        region_base = static_cast<std::size_t>(idx);
-      } else if(idx != static_cast<long long>(i + region_base)) {
-        msg = r.here() + "region index " + std::string(r[0]) + " out of sequence: expected " + std::to_string(i + region_base) +
-              " (indices must be consecutive; an index was skipped or repeated)";
-        return false;
-      }
       if(r.size() < 4) {
         msg = r.here() + "region " + std::string(r[0]) + " needs two coordinates and an attribute (expected: index x y attribute [maximum area])";
         return false;

@@ -1302,8 +1302,16 @@ private:
   double buffer_angle_excesses(const Point_2d& a2, const Point_2d& a, const Point_2d& b,
                                const Point_2d& c, const Point_2d& c2, bool count_first = true) const
   {
+    const std::array<double, 3> betas{ right_side_angle(a2, a, b), right_side_angle(a, b, c), right_side_angle(b, c, c2) };
+    return excess_score(betas, count_first);
+  }
+
+  // buffer_angle_excesses() of any number of buffer-side angles
+  template <class Betas>
+  static double excess_score(const Betas& betas, bool count_first)
+  {
     double out = 0, worst = 0, sum = 0;
-    for(double beta : { right_side_angle(a2, a, b), right_side_angle(a, b, c), right_side_angle(b, c, c2) }) {
+    for(double beta : betas) {
       const double x = (std::max)(0.0, beta - (225.0 + angle_tolerance / 2))
                        + (std::max)(0.0, (112.5 - angle_tolerance / 2) - beta);
       out += x > 0 ? 1 : 0;
@@ -1479,14 +1487,9 @@ private:
     auto beta_at = [&](int d) { return right_side_angle(m_xy[node(d - 1)], m_xy[node(d)], m_xy[node(d + 1)]); };
     if(buffer_angle_excess(beta_at(0)) <= angle_tolerance || near_input_corner(cyc[i])) return false;
     auto objective = [&](bool count_first) {
-      double out = 0, worst = 0, sum = 0;
-      for(int d = -3; d <= 3; ++d) {
-        const double x = buffer_angle_excess(beta_at(d));
-        out += x > angle_tolerance / 2 ? 1 : 0;
-        worst = (std::max)(worst, x);
-        sum += x;
-      }
-      return (count_first ? 1000.0 * out : 0.0) + worst + 0.1 * sum;
+      std::array<double, 7> betas;
+      for(int d = -3; d <= 3; ++d) betas[std::size_t(d + 3)] = beta_at(d);
+      return excess_score(betas, count_first);
     };
     const double start = objective(true);
     std::vector<std::size_t> movers;
