@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 namespace qm2_test_narrow {
 
@@ -125,6 +126,54 @@ TEST(Narrow_regions, a_thin_rectangle_is_narrow_all_along)
     EXPECT_GE(range.min, 45 - 1e-7) << "w = " << w;
     EXPECT_LE(range.max, 135 + 1e-7) << "w = " << w;
   }
+}
+
+// A 128-gon hole of radius 0.3 with one vertex 1e-7 above the bottom of a unit square. The
+// walk along the bottom stepped at least 1/65536 of its length (1.5e-5), so it never sampled
+// the gap: the buffer layers failed round after round (119 s, then "133 buffer quads not
+// convex"). Stepping down to the finest cell, one round meshes it.
+TEST(Narrow_regions, a_gap_far_narrower_than_its_sides_is_found)
+{
+  QM::Domain_2<K> d;
+  d.points = { K::Point_2(0, 0), K::Point_2(1, 0), K::Point_2(1, 1), K::Point_2(0, 1) };
+  d.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 } };
+  const double gap = 1e-7;
+  for(int k = 0; k < 128; ++k) {
+    const double a = 2 * M_PI * k / 128;
+    d.points.push_back(k == 96 ? K::Point_2(0.5, gap) : K::Point_2(0.5 + 0.3 * std::cos(a), 0.3 + gap + 0.3 * std::sin(a)));
+  }
+  close_loop(d, 4);
+  d.holes = { K::Point_2(0.5, 0.5) };
+  QM::Quadtree_mesher_2<K> mesher(d);
+  auto mesh = mesher.run(QM::Stage::BUFFER2);
+  EXPECT_EQ(mesher.rounds(), 1);
+  EXPECT_TRUE(qm2_checks::is_conforming(mesh));
+  const auto range = qm2_checks::angle_range(mesh);
+  EXPECT_GE(range.min, 45 - 1e-7);
+  EXPECT_LE(range.max, 135 + 1e-7);
+  const auto& tree = mesher.quadtree();
+  EXPECT_LT(tree.cell_side(tree.locate(K::Point_2(0.5, gap / 2)).level), gap / 2);
+}
+
+// A channel 1e-7 wide along a unit side needs millions of cells: an error naming the narrow
+// region as soon as its samples pass the cell budget, not after the quadtree has filled it
+// (or the memory).
+TEST(Narrow_regions, a_channel_beyond_the_cell_budget_is_an_error_naming_it)
+{
+  QM::Domain_2<K> d;
+  d.points = { K::Point_2(0, 0), K::Point_2(1, 0), K::Point_2(1, 1e-7), K::Point_2(0, 1e-7) };
+  d.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 } };
+  QM::Mesh_criteria_2<K> criteria;
+  criteria.set_max_cells(1 << 16);
+  std::string error;
+  try {
+    QM::Quadtree_mesher_2<K>(d, criteria).run(QM::Stage::QUADTREE);
+  } catch(const QM::Meshing_error& e) {
+    error = e.what();
+  }
+  EXPECT_NE(error.find("the narrow regions need more than 65536 quadtree cells (the cell budget): the gap near ("),
+            std::string::npos) << error;
+  EXPECT_NE(error.find(") is 1e-07 wide"), std::string::npos) << error;
 }
 
 TEST(Narrow_regions, invalid_loops_are_reported)

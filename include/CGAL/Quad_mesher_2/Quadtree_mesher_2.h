@@ -722,7 +722,7 @@ private:
   void refine_narrow_regions()
   {
     auto make_point = m_traits.construct_point_2_object();
-    for(const internal::Size_sample& s : internal::narrow_region_samples(m_domain, m_loops, m_traits)) {
+    for(const internal::Size_sample& s : internal::narrow_region_samples(m_domain, m_loops, m_tree->cell_side(m_tree->max_depth()), m_criteria.max_cells(), m_traits)) {
       const int level = level_for_size(s.size);
       if(level > m_tree->max_depth()) {
         std::ostringstream msg;
@@ -760,7 +760,7 @@ private:
           const std::array<double, 2> q{ { ax + t * dx, ay + t * dy } };
           const int level = m_tree->locate(make_point(q[0], q[1])).level;
           targets.push_back({ q, level });
-          t += (std::max)(m_tree->cell_side(level) / (2 * length), 1.0 / 65536);
+          t += m_tree->cell_side(level) / (2 * length);
         }
       }
     }

@@ -7,6 +7,7 @@
 
 #include <CGAL/Quad_mesher_2/Domain_2.h>
 #include <CGAL/Quad_mesher_2/Domain_loops_2.h>
+#include <CGAL/Quad_mesher_2/Meshing_error.h>
 
 #include <CGAL/Bbox_2.h>
 #include <CGAL/number_utils.h>
@@ -17,6 +18,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <sstream>
 #include <vector>
 
 namespace CGAL {
@@ -167,9 +169,16 @@ private:
 };
 
 // Size samples for every narrow region of the domain: see above. Each segment is sampled
-// densely enough that no stretch of a narrow channel goes without samples.
+// densely enough that no stretch of a narrow channel goes without samples, but never in steps
+// shorter than `finest_side`, the finest cell the quadtree makes: finer samples would ask for
+// the same cells. A gap is sampled every third of its width with three samples (its two walls
+// and its middle), each asking for a cell a quarter of its width: no two samples of a walk
+// share a cell, and each gap is walked from both walls, so more than 2 `max_cells` samples
+// ask for more leaves than the quadtree may make. That is an error naming where, found before
+// the samples fill the memory (a channel 1e-7 wide along a unit side).
 template <class K>
 std::vector<Size_sample> narrow_region_samples(const Domain_2<K>& domain, const Domain_loops_2<K>& loops,
+                                               double finest_side, std::size_t max_cells,
                                                const K& traits = K())
 {
   typedef Boundary_gap_finder::P P;
@@ -223,16 +232,22 @@ std::vector<Size_sample> narrow_region_samples(const Domain_2<K>& domain, const 
     const bool after_needle = prev != k && Boundary_gap_finder::needle_corner(finder.segments()[prev], s);
     // walk along the segment in steps of a third of the gap just found, so that a channel
     // is sampled all along however its width varies
-    const double min_step = s.length / 65536;
     double last_gap = HUGE_VAL; // the next sample's gap is about the same: search near it first
     for(double t = 0; t < s.length;) {
       const double u = t / s.length;
       const double w = add(P{ { s.a[0] + u * (s.b[0] - s.a[0]), s.a[1] + u * (s.b[1] - s.a[1]) } }, k,
                            s.arc_a + t, 2 * last_gap);
       last_gap = w;
+      if(samples.size() > 2 * max_cells) {
+        std::ostringstream msg;
+        msg << "the narrow regions need more than " << max_cells << " quadtree cells (the cell budget): the gap near ("
+            << samples.back().point[0] << ", " << samples.back().point[1] << ") is " << w
+            << " wide; coarsen the input there or raise the cell budget";
+        throw Meshing_error(msg.str());
+      }
       // no gap here: near a corner the far side still counts as its neighbour along the loop
       // (a thin rectangle's long sides, seen from its corners), so look again farther on
-      t += std::isfinite(w)                ? (std::max)(w / 3, min_step)
+      t += std::isfinite(w)                ? (std::max)(w / 3, finest_side)
            : after_needle && t == 0 ? Boundary_gap_finder::corner_zone * s.length
                                     : s.length / no_gap_samples;
     }
