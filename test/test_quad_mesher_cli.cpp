@@ -106,6 +106,18 @@ TEST(quad_mesher_cli, both_kernels_give_the_same_mesh)
   }
 }
 
+// Lemma 2 as the templates leave it, in the report: Lake Superior's core has 8 buffer-side
+// angles outside [112.5, 225], 7 of them within 2h of input corners (§5's)
+TEST(quad_mesher_cli, the_report_counts_lemma_2_at_the_templates_stage)
+{
+  auto json = scratch("l2.json"), m = scratch("l2.off");
+  ASSERT_EQ(run(lake + " -o " + m.string() + " --stop-after templates --report " + json.string()).status, 0);
+  const auto buffer = nlohmann::json::parse(slurp(json))["buffer"];
+  EXPECT_EQ(buffer["buffer_angles_out"].get<int>(), 8);
+  EXPECT_EQ(buffer["buffer_angles_out_away_from_corners"].get<int>(), 1);
+  EXPECT_EQ(buffer["corners_split"].get<int>(), 0);
+}
+
 TEST(quad_mesher_cli, sizing_options_change_the_mesh)
 {
   auto a = scratch("s_default.json"), b = scratch("s_max.json"), m = scratch("s.off");

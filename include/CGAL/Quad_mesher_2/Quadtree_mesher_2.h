@@ -249,7 +249,7 @@ public:
     bool ok = layers.match_loops();
     if(ok && last >= Stage::TEMPLATES) {
       layers.apply_boundary_templates(m_point_vertices);
-      layers.fill_notches();
+      layers.apply_connectivity_templates();
     }
     if(ok && last >= Stage::BUFFER1)
       layers.build_first_layer();

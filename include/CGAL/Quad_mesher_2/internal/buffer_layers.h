@@ -33,10 +33,12 @@
 //    vertices within two quads of it may give way (they move to keep their quads within
 //    [45°, 135°]); still out, it moves with its two neighbours each side (search_window()).
 //    Not near an input corner: its buffer is the corner's (§5).
-//    A notch under 95° that still cannot move (a core angle of 45° at it) gets a new core quad
-//    over it, its fourth corner on the bisector or, beside an adaptive core, searched for off
-//    it, which leaves about the angles the move would have; not where the notch faces a corner
-//    that needs a fan of three (it is the fan's room). The vertices around are searched again.
+//    A notch that still cannot move (a core angle of 45° at it) gets a new core quad over it
+//    (within 2h of an input corner only under 95°), its fourth corner on the bisector or,
+//    beside an adaptive core, searched for off it, which leaves about the angles the move
+//    would have; not where the notch faces a corner that needs a fan of three (it is the fan's
+//    room). A convex corner that cannot move, its one quad jammed by a transition template,
+//    has that quad split in three (split_corner()). The vertices around are searched again.
 // 3. First buffer layer (§4.5): B's first buffer point F lies halfway (in distance to the
 //    boundary) between B and the boundary, along the mean of the bisector of beta and the
 //    direction to the nearest boundary point, turned back towards the bisector where B's two
@@ -386,6 +388,11 @@ struct Buffer_report
   std::size_t moved_notches = 0;
   std::size_t cut_corners = 0;
   std::size_t filled_notches = 0;
+  std::size_t split_corners = 0;
+  /// after the templates: core boundary vertices whose buffer-side angle is outside
+  /// [112.5°, 225°] (Lemma 2), and those of them not within 2h of an input corner
+  std::size_t buffer_angles_out = 0;
+  std::size_t buffer_angles_out_away_from_corners = 0;
   /// core boundary vertices moved by the plane search, and interior core vertices moved to
   /// give them room
   std::size_t searched_vertices = 0;
@@ -518,15 +525,41 @@ public:
 
   /// Stage "templates", after apply_boundary_templates(): a new core quad over each notch that could not
   /// move (see fill_notch()), then the vertices about them searched again.
-  void fill_notches()
+  void apply_connectivity_templates()
   {
-    const std::size_t filled = m_report.filled_notches;
+    const std::size_t changed = m_report.filled_notches + m_report.split_corners;
     for(std::size_t c = 0; c < m_cycles.size(); ++c)
       for(std::size_t i = 0; i < m_cycles[c].size(); ++i)
         fill_notch(c, i);
-    if(m_report.filled_notches > filled)
+    {
+      const Vertex_quads quads_at(m_mesh.quads, m_mesh.points.size());
+      const std::size_t known = m_mesh.points.size(); // quads_at knows these
+      std::vector<char> split(m_mesh.quads.size(), 0);
+      for(std::size_t c = 0; c < m_cycles.size(); ++c)
+        for(std::size_t i = 0; i < m_cycles[c].size(); ++i)
+          if(split_corner(c, i, quads_at, known, split)) ++i; // past the corner, now between its new points
+    }
+    if(m_report.filled_notches + m_report.split_corners > changed)
       search_boundary_vertices(Vertex_quads(m_mesh.quads, m_mesh.points.size()));
     m_cleared_xy = std::vector<Point_2d>();
+    count_lemma_2_misses();
+  }
+
+  // The templates' result against Lemma 2: the core boundary vertices whose buffer-side
+  // angle is outside [112.5, 225], and those of them not within 2h of an input corner (whose
+  // buffer is the corner's, §5).
+  void count_lemma_2_misses()
+  {
+    m_report.buffer_angles_out = m_report.buffer_angles_out_away_from_corners = 0;
+    for(const auto& cyc : m_cycles) {
+      const std::size_t n = cyc.size();
+      for(std::size_t i = 0; i < n; ++i)
+        if(buffer_angle_excess(right_side_angle(m_xy[cyc[(i + n - 1) % n]], m_xy[cyc[i]], m_xy[cyc[(i + 1) % n]]))
+           > angle_tolerance) {
+          ++m_report.buffer_angles_out;
+          if(!near_input_corner(cyc[i])) ++m_report.buffer_angles_out_away_from_corners;
+        }
+    }
   }
 
   /// Stage "buffer1": the first buffer points and the quads B_i F_i F_{i+1} B_{i+1}.
@@ -554,8 +587,7 @@ public:
         // its quad had 164 degrees at B). A notch of 90 degrees or less (beside a sharp
         // corner, where Lemma 2 failed) has no such room: on its bisector alone its F point
         // and its neighbours' crossed (the guitar's (11.53, 7.93)).
-        const double pi = 3.14159265358979323846;
-        const double beta = right_side_angle(a, b, nb) * pi / 180;
+            const double beta = right_side_angle(a, b, nb) * pi / 180;
         const double limit = 0.8 * (std::min)(beta / 2 - pi / 4, 3 * pi / 4 - beta / 2);
         const double dev = std::atan2(cross_2d(bis, d), dot_2d(bis, d));
         if(limit > 0 && std::abs(dev) > limit) {
@@ -652,7 +684,7 @@ public:
     // the eight directions the tries step in, and the tries, made once
     std::array<Point_2d, 8> direction;
     for(int k = 0; k < 8; ++k) {
-      const double a = k * 3.14159265358979323846 / 4;
+      const double a = k * pi / 4;
       direction[k] = Point_2d{ std::cos(a), std::sin(a) };
     }
     std::vector<Point_2d> tries;
@@ -782,8 +814,7 @@ public:
     Point_2d lap{0, 0};
     for(std::size_t q : quads_at[v]) {
       const Quad& Q = m_mesh.quads[q];
-      int c = 0;
-      while(Q[c] != v) ++c;
+      const int c = corner_of(Q, v);
       const Point_2d& prev = m_xy[Q[(c + 3) % 4]];
       const Point_2d& next = m_xy[Q[(c + 1) % 4]];
       const Point_2d& opp = m_xy[Q[(c + 2) % 4]];
@@ -837,8 +868,7 @@ public:
         if(b >= 1000.0) ++r.invalid;
         else if(b > 45.0 + angle_tolerance) ++r.out;
         const Quad& Q = m_mesh.quads[q];
-        int c = 0;
-        while(Q[c] != v) ++c;
+        const int c = corner_of(Q, v);
         // an edge collapsing to a point keeps the angles fine but merges two vertices: the
         // whole-mesh check rejects vertices within 1e-9 of the diagonal
         for(int side : { 1, 3 }) {
@@ -852,8 +882,7 @@ public:
         double angle_sum = 0;
         for(std::size_t q : quads_at[v]) {
           const Quad& Q = m_mesh.quads[q];
-          int c = 0;
-          while(Q[c] != v) ++c;
+          const int c = corner_of(Q, v);
           angle_sum += corner_angle_degrees(m_xy[Q[(c + 3) % 4]], m_xy[v], m_xy[Q[(c + 1) % 4]]);
         }
         if(std::abs(angle_sum - expected) > 1e-6)
@@ -993,10 +1022,11 @@ private:
   // 67.5 degrees of buffer side each and Y has about 225, the angles template 1(a) gives by
   // moving B there. Kept if the quad is within [45, 135], its new edges keep the clearance,
   // and the buffer-side angles at A, Y and C come nearer [112.5, 225] than before.
-  // Only notches under 95 degrees are filled: from there the first layer splits beta in two
-  // quads over 45 degrees each, and a new quad over such a notch (100 to 112 degrees, most of
-  // them transition templates) changed the strip's pairing for the worse
-  // (airfoil_3elem_jigsaw's (0.5, 0.906): a sheared ladder at the nearby corner). Nor is a notch
+  // Within 2h of an input corner only notches under 95 degrees are filled: from there the
+  // first layer splits beta in two quads over 45 degrees each, and a new quad over such a notch
+  // (100 to 112 degrees, most of them transition templates) changed the strip's pairing for
+  // the worse (airfoil_3elem_jigsaw's (0.5, 0.906): a sheared ladder at the nearby corner).
+  // Away from corners every notch is (the guitar's 99.7 degrees at (35.28, 6.18)). Nor is a notch
   // that faces a corner needing a fan of three (its nearest boundary point is that corner): the
   // notch is the fan's room, and filling it left the fan's quads squeezed (the 30P30N main
   // element's trailing edge, bird's tip).
@@ -1007,7 +1037,7 @@ private:
     const std::size_t a2 = cyc[(i + n - 2) % n], a = cyc[(i + n - 1) % n], b = cyc[i];
     const std::size_t c1 = cyc[(i + 1) % n], c2 = cyc[(i + 2) % n];
     const double beta = right_side_angle(m_xy[a], m_xy[b], m_xy[c1]);
-    if(beta >= 95.0) return;
+    if(beta >= 112.5 - angle_tolerance || (beta >= 95.0 && near_input_corner(b))) return;
     {
       const Loop_locator::Hit h = m_locator->closest(m_xy[b], 2 * m_size[b]);
       const std::size_t nv = m_locator->loop(h.loop).size();
@@ -1041,7 +1071,6 @@ private:
       consider(Point_2d{ m_xy[b].x + f * s * d.x, m_xy[b].y + f * s * d.y });
     // Beside an adaptive core the quad's other corners are not a lattice notch's: Y then
     // needs to lie off the bisector (a pattern search as for a vertex, search_boundary_vertex())
-    const double pi = 3.14159265358979323846;
     if(!found)
       for(double f : { 0.7, 0.85, 1.0, 1.15, 1.3 })
         for(int k = -2; k <= 2; ++k) {
@@ -1064,6 +1093,71 @@ private:
     ++m_report.filled_notches;
   }
 
+  // A convex corner that no move brought into range (buffer-side angle over 225 degrees) whose
+  // core angle is a single quad's, jammed by its other corners: a transition template's 45
+  // degrees at a neighbour, 135 opposite (naca0012's (0.0710, -0.0456): 108 degrees, beta 252).
+  // The quad B C X A is split in three through the midpoints of its two boundary edges and its
+  // centre O: B Mc O Ma, Mc C X O, Ma O X A (on a square, three rectangles of right angles,
+  // the new points' betas 180). B's quad then shares no corner with the template that jammed
+  // it, and the search moves B in as template 1(b) would, O giving way: a kite at B. Not where
+  // no centre keeps the three quads within [45, 135].
+  // (`quads_at` knows the first `known` points; `split` marks the quads split before.)
+  bool split_corner(std::size_t c, std::size_t i, const Vertex_quads& quads_at, std::size_t known,
+                    std::vector<char>& split)
+  {
+    auto& cyc = m_cycles[c];
+    const std::size_t n = cyc.size();
+    const std::size_t a = cyc[(i + n - 1) % n], b = cyc[i], c1 = cyc[(i + 1) % n];
+    if(n < 8 || a >= known || b >= known || c1 >= known || m_fixed[b] || quads_at[b].size() != 1
+       || right_side_angle(m_xy[a], m_xy[b], m_xy[c1]) <= 225.0 + angle_tolerance || near_input_corner(b))
+      return false;
+    const std::size_t q = *quads_at[b].begin();
+    if(split[q]) return false;
+    split[q] = 1;
+    const Quad Q = m_mesh.quads[q];
+    const int k = corner_of(Q, b);
+    if(Q[(k + 1) % 4] != c1 || Q[(k + 3) % 4] != a) return false;
+    const std::size_t x = Q[(k + 2) % 4];
+    auto mid = [&](const Point_2d& u, const Point_2d& v) { return Point_2d{ (u.x + v.x) / 2, (u.y + v.y) / 2 }; };
+    const Point_2d pa = mid(m_xy[a], m_xy[b]), pc = mid(m_xy[b], m_xy[c1]);
+    // O from the centre where the three quads' worst angle is least: a quad far from a
+    // square (a tongue's tip) left one under 45 degrees
+    auto worst = [&](const Point_2d& o) {
+      return (std::max)({ quad_badness({ m_xy[b], pc, o, pa }), quad_badness({ pc, m_xy[c1], m_xy[x], o }),
+                          quad_badness({ pa, o, m_xy[x], m_xy[a] }) });
+    };
+    Point_2d centre = mid(mid(m_xy[a], m_xy[c1]), mid(m_xy[b], m_xy[x]));
+    double least = worst(centre);
+    pattern_search(centre, length_2d(minus_2d(m_xy[x], m_xy[b])), [&](const Point_2d& o) {
+      const double w = worst(o);
+      if(!(w < least)) return false;
+      least = w;
+      centre = o;
+      return true;
+    });
+    if(least > 45.0 + core_slack) return false;
+    auto add_core_point = [&](const Point_2d& p, bool on_boundary) {
+      const std::size_t v = add_point(p);
+      m_size.push_back(m_size[b]);
+      m_on_cycle.push_back(on_boundary ? 1 : 0);
+      m_fixed.push_back(0);
+      m_shaped.push_back(0);
+      m_cleared_xy.push_back(p);
+      return v;
+    };
+    const std::size_t ma = add_core_point(pa, true);
+    const std::size_t mc = add_core_point(pc, true);
+    const std::size_t o = add_core_point(centre, false);
+    m_core_points = m_mesh.points.size();
+    m_mesh.quads[q] = { b, mc, o, ma };
+    add_quad({ mc, c1, x, o });
+    add_quad({ ma, o, x, a });
+    cyc.insert(cyc.begin() + std::ptrdiff_t(i) + 1, mc);
+    cyc.insert(cyc.begin() + std::ptrdiff_t(i), ma);
+    ++m_report.split_corners;
+    return true;
+  }
+
   // Beside an input corner, v turns about it to share the corner's angle evenly between the
   // two quads it separates there (the paper's rotated bisectors, §5): one target per corner.
   void add_turns_about_corners(std::size_t v, const Vertex_quads& quads_at,
@@ -1072,8 +1166,7 @@ private:
     const Point_2d old = m_xy[v];
     for(std::size_t q : quads_at[v]) {
       const Quad& Q = m_mesh.quads[q];
-      int c = 0;
-      while(Q[c] != v) ++c;
+      const int c = corner_of(Q, v);
       for(int side : { 1, 3 }) {
         const std::size_t corner = Q[(c + side) % 4];
         if(!is_input_vertex(corner)) continue;
@@ -1090,7 +1183,7 @@ private:
         const double here = corner_angle_degrees(w, P, old);
         if(other < 0 || here <= 135.0) continue;
         // turn v towards w by half the difference
-        const double turn = (here - other) / 2 * 3.14159265358979323846 / 180;
+        const double turn = (here - other) / 2 * pi / 180;
         const Point_2d d = minus_2d(old, P), e = minus_2d(w, P);
         const double sense = cross_2d(d, e) > 0 ? 1.0 : -1.0;
         const double cs = std::cos(sense * turn), sn = std::sin(sense * turn);
@@ -1120,6 +1213,15 @@ private:
   }
 
   static constexpr std::size_t none = std::size_t(-1);
+  static constexpr double pi = 3.14159265358979323846;
+
+  // the corner of quad Q that is vertex v (a corner of it)
+  static int corner_of(const Quad& Q, std::size_t v)
+  {
+    int c = 0;
+    while(Q[c] != v) ++c;
+    return c;
+  }
   // Angles within this many degrees of a bound count as on it, and closer ones as equal:
   // doubles hold an angle only to about 1e-8 degrees where the coordinates are 2^20 cell
   // sides, and a choice made by rounding differs on a scaled or moved domain (a cut corner's
@@ -1339,8 +1441,7 @@ private:
         for(int k = 0; k < 4; ++k) P[k] = m_xy[Q[k]];
         ok = quad_badness(P) <= 45.0 + core_slack;
       }
-      int k = 0;
-      while(Q[k] != b) ++k;
+      const int k = corner_of(Q, b);
       for(int side : { 1, 3 }) {
         const std::size_t w = Q[(k + side) % 4];
         ok = ok && keeps_half_length(b, w, p);
@@ -1372,7 +1473,6 @@ private:
        || near_input_corner(b))
       return false;
     const double e = 0.5 * (length_2d(minus_2d(old, m_xy[a])) + length_2d(minus_2d(m_xy[c], old)));
-    const double pi = 3.14159265358979323846;
     auto ring = [&](double r, int k) {
       return Point_2d{ old.x + r * e * std::cos(k * pi / 6), old.y + r * e * std::sin(k * pi / 6) };
     };
@@ -1429,7 +1529,6 @@ private:
   template <class Consider>
   static void pattern_search(const Point_2d& at, double scale, const Consider& consider)
   {
-    const double pi = 3.14159265358979323846;
     double step = 0.05 * scale;
     for(int i = 0; i < 400 && step > 1e-10 * scale; ++i) {
       const Point_2d from = at;
@@ -1500,7 +1599,6 @@ private:
       movers.push_back(v);
       before.push_back(m_xy[v]);
     }
-    const double pi = 3.14159265358979323846;
     for(int sweep = 0; sweep < 6; ++sweep) {
       bool moved = false;
       for(int d = -2; d <= 2; ++d) {
@@ -1593,8 +1691,7 @@ private:
     auto short_edge = [&](std::size_t v) {
       for(std::size_t q : quads_at[v]) {
         const Quad& Q = m_mesh.quads[q];
-        int c = 0;
-        while(Q[c] != v) ++c;
+        const int c = corner_of(Q, v);
         for(int side : { 1, 3 }) {
           const std::size_t w = Q[(c + side) % 4];
           if(!keeps_half_length(v, w, m_xy[v]))
@@ -2682,7 +2779,7 @@ private:
   // the quads at each vertex from match_loops() to apply_boundary_templates(), which add none
   std::unique_ptr<Vertex_quads> m_quads_at;
   std::vector<Point_2d> m_xy;
-  std::vector<Point_2d> m_cleared_xy; // m_xy before apply_boundary_templates(), until fill_notches()
+  std::vector<Point_2d> m_cleared_xy; // m_xy before apply_boundary_templates(), until apply_connectivity_templates()
   std::vector<std::vector<std::size_t>> m_cycles;
   std::vector<std::size_t> m_cycle_loop;
   std::vector<std::vector<Point_2d>> m_first;
