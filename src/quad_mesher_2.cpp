@@ -17,6 +17,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <chrono>
 #include <cerrno>
 #include <cmath>
@@ -120,13 +121,20 @@ double seconds_since(std::chrono::steady_clock::time_point start)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// a count per buffer layer: the core's quads the templates changed, the first layer, the second
+nlohmann::json by_layer(const std::array<std::size_t, 3>& n)
+{
+  return { { "core", n[0] }, { "first_layer", n[1] }, { "second_layer", n[2] } };
+}
+
 // one refinement round as -v prints it, when it ends
 template <class Figures>
 void print_round(std::ostream& out, const Figures& f)
 {
   out << "round " << f.round << ": " << f.quads << " quads, " << (f.valid ? "valid" : "invalid") << ", "
-      << f.invalid_quads << " buffer quads not convex, " << f.bad_angle_quads << " with an unforced angle out, "
-      << f.refinement_requests << " refinement requests, " << f.seconds << " s" << std::endl;
+      << f.invalid_quads << " buffer quads not convex, " << f.bad_angle_quads << " with an unforced angle out ("
+      << f.bad_angle_quads_by_layer[0] << " core, " << f.bad_angle_quads_by_layer[1] << " first layer, "
+      << f.bad_angle_quads_by_layer[2] << " second layer), " << f.refinement_requests << " refinement requests, " << f.seconds << " s" << std::endl;
 }
 
 template <class K>
@@ -261,7 +269,20 @@ int run(const Options& opt)
                          { "interior_vertices_moved", b.shaped_interior },
                          { "first_layer_quads", b.first_layer_quads },
                          { "second_layer_quads", b.second_layer_quads },
-                         { "quads_outside_45_135_not_forced", b.bad_angle_quads } };
+                         { "quads_outside_45_135_not_forced", b.bad_angle_quads },
+                         { "quads_outside_45_135_not_forced_by_layer", by_layer(b.bad_angle_quads_by_layer) } };
+    // every round: the first is the stages' own result, before any refinement for angles
+    nlohmann::json rounds = nlohmann::json::array();
+    for(const auto& f : mesher.round_figures())
+      rounds.push_back({ { "round", f.round },
+                         { "quads", f.quads },
+                         { "valid", f.valid },
+                         { "buffer_quads_not_convex", f.invalid_quads },
+                         { "quads_outside_45_135_not_forced", f.bad_angle_quads },
+                         { "quads_outside_45_135_not_forced_by_layer", by_layer(f.bad_angle_quads_by_layer) },
+                         { "refinement_requests", f.refinement_requests },
+                         { "seconds", f.seconds } });
+    report["rounds"] = rounds;
     if(b.bad_angle_quads > 0)
       std::cerr << "quad-mesher: " << opt.input << ": warning: " << b.bad_angle_quads
                 << " buffer quads have an angle outside [45, 135] that no input corner forces\n";

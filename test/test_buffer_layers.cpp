@@ -1470,6 +1470,9 @@ TEST(Buffer_layers, the_round_observer_sees_every_round_as_it_ends)
     EXPECT_EQ(seen[r].quads, figures[r].quads);
     EXPECT_EQ(seen[r].invalid_quads, figures[r].invalid_quads);
     EXPECT_EQ(seen[r].bad_angle_quads, figures[r].bad_angle_quads);
+    EXPECT_EQ(seen[r].bad_angle_quads_by_layer, figures[r].bad_angle_quads_by_layer);
+    EXPECT_EQ(figures[r].bad_angle_quads_by_layer[0] + figures[r].bad_angle_quads_by_layer[1]
+                + figures[r].bad_angle_quads_by_layer[2], figures[r].bad_angle_quads);
     EXPECT_EQ(seen[r].valid, figures[r].valid);
     EXPECT_EQ(seen[r].refinement_requests, figures[r].refinement_requests);
     EXPECT_EQ(seen[r].seconds, figures[r].seconds);

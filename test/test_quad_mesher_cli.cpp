@@ -383,12 +383,27 @@ TEST(quad_mesher_cli, verbose_prints_each_round)
     const std::size_t at = r.err.find("round " + std::to_string(k) + ": ");
     ASSERT_NE(at, std::string::npos) << k << "\n" << r.err;
     const std::string line = r.err.substr(at, r.err.find('\n', at) - at);
-    for(const char* part : { " quads, ", "valid, ", " buffer quads not convex, ", " with an unforced angle out, ",
-                             " refinement requests, " })
+    for(const char* part : { " quads, ", "valid, ", " buffer quads not convex, ", " with an unforced angle out (",
+                             " core, ", " first layer, ", " second layer), ", " refinement requests, " })
       EXPECT_NE(line.find(part), std::string::npos) << part << " in " << line;
     EXPECT_EQ(line.substr(line.size() - 2), " s") << line;
   }
   EXPECT_EQ(r.err.find("round " + std::to_string(rounds + 1) + ": "), std::string::npos) << r.err;
+  // the report lists the same rounds, each with its unforced angles out by layer (the first
+  // round's are the stages' own, Lemmas 3 and 4 before any refinement for angles)
+  const auto listed = nlohmann::json::parse(slurp(json))["rounds"];
+  ASSERT_EQ(int(listed.size()), rounds);
+  for(int k = 0; k < rounds; ++k) {
+    const auto& f = listed[std::size_t(k)];
+    EXPECT_EQ(f["round"].get<int>(), k + 1);
+    const auto& layers = f["quads_outside_45_135_not_forced_by_layer"];
+    EXPECT_EQ(layers["core"].get<int>() + layers["first_layer"].get<int>() + layers["second_layer"].get<int>(),
+              f["quads_outside_45_135_not_forced"].get<int>());
+    EXPECT_NE(r.err.find("round " + std::to_string(k + 1) + ": " + std::to_string(f["quads"].get<int>()) + " quads"),
+              std::string::npos);
+  }
+  EXPECT_GT(listed[0]["quads_outside_45_135_not_forced"].get<int>(), 0); // why Lake Superior takes rounds
+  EXPECT_EQ(listed[std::size_t(rounds - 1)]["quads_outside_45_135_not_forced"].get<int>(), 0);
 }
 
 } // namespace qm2_test_cli

@@ -338,7 +338,7 @@ public:
       // refined for validity first; for angles only once a round is valid
       const auto& requests = valid ? m_buffer_report.angle_requests : m_buffer_report.refine_requests;
       m_round_figures.push_back({ m_rounds, mesh.quads.size(), m_buffer_report.invalid_quads,
-                                  m_buffer_report.bad_angle_quads, valid, requests.size(),
+                                  m_buffer_report.bad_angle_quads, m_buffer_report.bad_angle_quads_by_layer, valid, requests.size(),
                                   std::chrono::duration<double>(std::chrono::steady_clock::now() - round_start).count() });
       if(m_round_observer)
         m_round_observer(m_round_figures.back());
@@ -376,6 +376,8 @@ public:
     std::size_t quads = 0;
     std::size_t invalid_quads = 0;    ///< buffer quads not strictly convex
     std::size_t bad_angle_quads = 0;  ///< buffer quads with an angle out that no input corner forces
+    /// of those, the core's (changed by the templates), the first layer's and the second's
+    std::array<std::size_t, 3> bad_angle_quads_by_layer{ { 0, 0, 0 } };
     bool valid = false;               ///< the whole mesh passed its check
     std::size_t refinement_requests = 0; ///< places it asked to be finer (for validity, or angles once valid)
     double seconds = 0;               ///< its wall-clock time, from the quadtree to the whole-mesh check

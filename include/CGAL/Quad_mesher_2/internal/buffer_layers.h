@@ -401,6 +401,9 @@ struct Buffer_report
   std::size_t second_layer_quads = 0;
   std::size_t invalid_quads = 0;
   std::size_t bad_angle_quads = 0;
+  /// the bad-angle quads among the core's quads the templates changed, the first layer's
+  /// (Lemma 3) and the second's (Lemma 4)
+  std::array<std::size_t, 3> bad_angle_quads_by_layer{ { 0, 0, 0 } };
   /// points (with the local size there) where a finer quadtree would make the buffer valid
   std::vector<std::pair<Point_2d, double>> refine_requests;
   /// the same, where it would bring angles into [45, 135]
@@ -565,6 +568,7 @@ public:
   /// Stage "buffer1": the first buffer points and the quads B_i F_i F_{i+1} B_{i+1}.
   void build_first_layer()
   {
+    m_layer_begin[0] = m_mesh.quads.size();
     m_first.assign(m_cycles.size(), {});
     for(std::size_t c = 0; c < m_cycles.size(); ++c) {
       const auto& cyc = m_cycles[c];
@@ -587,7 +591,7 @@ public:
         // its quad had 164 degrees at B). A notch of 90 degrees or less (beside a sharp
         // corner, where Lemma 2 failed) has no such room: on its bisector alone its F point
         // and its neighbours' crossed (the guitar's (11.53, 7.93)).
-            const double beta = right_side_angle(a, b, nb) * pi / 180;
+        const double beta = right_side_angle(a, b, nb) * pi / 180;
         const double limit = 0.8 * (std::min)(beta / 2 - pi / 4, 3 * pi / 4 - beta / 2);
         const double dev = std::atan2(cross_2d(bis, d), dot_2d(bis, d));
         if(limit > 0 && std::abs(dev) > limit) {
@@ -724,6 +728,7 @@ public:
   /// Stage "buffer2": the strip between the first buffer points and the boundary.
   void build_second_layer()
   {
+    m_layer_begin[1] = m_mesh.quads.size();
     for(std::size_t c = 0; c < m_cycles.size(); ++c)
       build_strip(c);
   }
@@ -752,7 +757,10 @@ public:
             bad_angle = true;
       }
       if(!valid) ++m_report.invalid_quads;
-      if(bad_angle) ++m_report.bad_angle_quads;
+      if(bad_angle) {
+        ++m_report.bad_angle_quads;
+        ++m_report.bad_angle_quads_by_layer[q < m_layer_begin[0] ? 0 : q < m_layer_begin[1] ? 1 : 2];
+      }
       if(!valid || bad_angle) {
         auto& requests = valid ? m_report.angle_requests : m_report.refine_requests;
         for(int c = 0; c < 4; ++c)
@@ -2806,6 +2814,8 @@ private:
   bool m_cache_costs = false;
   bool m_first_built = false;
   std::size_t m_core_points = 0;
+  // the first quad of the first buffer layer and of the second (the core's come before)
+  std::array<std::size_t, 2> m_layer_begin{ { std::size_t(-1), std::size_t(-1) } };
   double m_feature_angle = 20.0;  // turning (degrees) that makes a loop vertex a corner
   double m_chord_tolerance = 0;   // how far the mesh boundary may leave the input's
   Buffer_report m_report;
