@@ -421,6 +421,19 @@ TEST(Buffer_layers, tiny_domain_far_from_the_origin)
   EXPECT_GE(f.share_45_135, 0.89); // measured 0.9591 (Epick), 0.9440 (Epeck)
 }
 
+// Far from the origin a double holds few digits of a small domain's edges: the kites of
+// template 1(b), at exactly 225 degrees, came out up to 6e-4 degrees over on a disc 1e-4
+// across at 1e5 with a hole, and 29 of them were split as if jammed (72 counted out of
+// Lemma 2). What rounding can do to an angle there is not a miss.
+TEST(Buffer_layers, rounding_far_from_the_origin_is_no_lemma_2_miss)
+{
+  const Domain d = polygons({ disc(1e5, 1e5, 5e-5, 120), disc(1e5 + 1e-5, 1e5, 1.5e-5, 40) }, { Point(1e5 + 1e-5, 1e5) });
+  Mesher mesher(d);
+  mesher.run(Stage::TEMPLATES);
+  EXPECT_EQ(mesher.buffer_report().split_corners, 0u);
+  EXPECT_EQ(mesher.buffer_report().buffer_angles_out, 0u);
+}
+
 // Holes 1e-8 to 1e-7 across in a unit square: before, the buffer's collapse guard (1e-8 of
 // the diagonal) forbade every edge this small, refinement rounds grew the mesh to 600k quads
 // in 40 s and the 2e-8 and 3e-8 holes failed; the quadtree now also stops at cells whose

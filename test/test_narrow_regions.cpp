@@ -176,6 +176,27 @@ TEST(Narrow_regions, a_channel_beyond_the_cell_budget_is_an_error_naming_it)
   EXPECT_NE(error.find(") is 1e-07 wide"), std::string::npos) << error;
 }
 
+// A channel thinner than the finest cell the quadtree makes (1e-8 across a unit square,
+// whose cells stop at 7.5e-9) is the depth error at once, naming the width: walking it at the
+// finest step reached the cell budget after seconds and 0.8 GB, and said to raise it (a
+// reviewer's find).
+TEST(Narrow_regions, a_gap_below_the_finest_cell_is_the_depth_error_at_once)
+{
+  QM::Domain_2<K> d;
+  d.points = { K::Point_2(0, 0), K::Point_2(1, 0), K::Point_2(1, 1e-8), K::Point_2(0, 1e-8) };
+  d.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 } };
+  QM::Mesh_criteria_2<K> criteria;
+  criteria.set_max_cells(1 << 16); // the budget error would come first if the walk went on
+  std::string error;
+  try {
+    QM::Quadtree_mesher_2<K>(d, criteria).run(QM::Stage::QUADTREE);
+  } catch(const QM::Meshing_error& e) {
+    error = e.what();
+  }
+  EXPECT_NE(error.find("a narrow region of width 1e-08 near ("), std::string::npos) << error;
+  EXPECT_NE(error.find("needs quadtree depth"), std::string::npos) << error;
+}
+
 TEST(Narrow_regions, invalid_loops_are_reported)
 {
   QM::Domain_2<K> d = dumbbell(0.01, 16);

@@ -171,11 +171,13 @@ private:
 // Size samples for every narrow region of the domain: see above. Each segment is sampled
 // densely enough that no stretch of a narrow channel goes without samples, but never in steps
 // shorter than `finest_side`, the finest cell the quadtree makes: finer samples would ask for
-// the same cells. A gap is sampled every third of its width with three samples (its two walls
-// and its middle), each asking for a cell a quarter of its width: no two samples of a walk
-// share a cell, and each gap is walked from both walls, so more than 2 `max_cells` samples
-// ask for more leaves than the quadtree may make. That is an error naming where, found before
-// the samples fill the memory (a channel 1e-7 wide along a unit side).
+// the same cells. A gap needing cells finer than that ends the walk, its samples last (the
+// caller's depth error names it). A gap is sampled every third of its width with three
+// samples (its two walls and its middle), each asking for a cell a quarter of its width: no
+// two samples of a walk share a cell, and each gap is walked from both walls, so more than
+// 2 `max_cells` samples ask for more leaves than the quadtree may make. That is an error
+// naming where, found before the samples fill the memory (a channel 1e-7 wide along a unit
+// side).
 template <class K>
 std::vector<Size_sample> narrow_region_samples(const Domain_2<K>& domain, const Domain_loops_2<K>& loops,
                                                double finest_side, std::size_t max_cells,
@@ -238,6 +240,10 @@ std::vector<Size_sample> narrow_region_samples(const Domain_2<K>& domain, const 
       const double w = add(P{ { s.a[0] + u * (s.b[0] - s.a[0]), s.a[1] + u * (s.b[1] - s.a[1]) } }, k,
                            s.arc_a + t, 2 * last_gap);
       last_gap = w;
+      // a gap needing cells finer than the quadtree makes: the caller's depth error names it
+      // now (walking on at the finest step ran into the cell budget, a misleading error)
+      if(w / 4 < finest_side)
+        return samples;
       if(samples.size() > 2 * max_cells) {
         std::ostringstream msg;
         msg << "the narrow regions need more than " << max_cells << " quadtree cells (the cell budget): the gap near ("

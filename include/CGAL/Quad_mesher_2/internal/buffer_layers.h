@@ -549,19 +549,20 @@ public:
   }
 
   // The templates' result against Lemma 2: the core boundary vertices whose buffer-side
-  // angle is outside [112.5, 225], and those of them not within 2h of an input corner (whose
-  // buffer is the corner's, §5).
+  // angle is outside [112.5, 225] by more than rounding, and those of them not within 2h of an
+  // input corner (whose buffer is the corner's, §5).
   void count_lemma_2_misses()
   {
     m_report.buffer_angles_out = m_report.buffer_angles_out_away_from_corners = 0;
     for(const auto& cyc : m_cycles) {
       const std::size_t n = cyc.size();
-      for(std::size_t i = 0; i < n; ++i)
-        if(buffer_angle_excess(right_side_angle(m_xy[cyc[(i + n - 1) % n]], m_xy[cyc[i]], m_xy[cyc[(i + 1) % n]]))
-           > angle_tolerance) {
+      for(std::size_t i = 0; i < n; ++i) {
+        const std::size_t a = cyc[(i + n - 1) % n], b = cyc[i], c = cyc[(i + 1) % n];
+        if(buffer_angle_excess(right_side_angle(m_xy[a], m_xy[b], m_xy[c])) > rounding_tolerance(a, b, c)) {
           ++m_report.buffer_angles_out;
-          if(!near_input_corner(cyc[i])) ++m_report.buffer_angles_out_away_from_corners;
+          if(!near_input_corner(b)) ++m_report.buffer_angles_out_away_from_corners;
         }
+      }
     }
   }
 
@@ -1011,6 +1012,17 @@ private:
   {
     return (std::max)(0.0, beta - 225.0) + (std::max)(0.0, 112.5 - beta);
   }
+  // how far the angle at b (between a and c) may be off by the rounding of their coordinates
+  // to doubles, in degrees, and at least angle_tolerance: far from the origin a double holds
+  // few digits of a small domain's edges (a disc 1e-4 across at 1e5: kites of exactly 225
+  // degrees came out 6e-4 over, and were split as if jammed)
+  double rounding_tolerance(std::size_t a, std::size_t b, std::size_t c) const
+  {
+    double scale = 0;
+    for(std::size_t v : { a, b, c }) scale = (std::max)({ scale, std::abs(m_xy[v].x), std::abs(m_xy[v].y) });
+    const double edge = (std::min)(length_2d(minus_2d(m_xy[a], m_xy[b])), length_2d(minus_2d(m_xy[c], m_xy[b])));
+    return (std::max)(angle_tolerance, 64 * std::numeric_limits<double>::epsilon() * scale / edge * 180 / pi);
+  }
   // the largest buffer_angle_excess() of the three buffer-side angles at a, b and c, which
   // are consecutive on a core cycle between a2 and c2 (what a template step at b changes)
   double worst_buffer_angle_excess(const Point_2d& a2, const Point_2d& a, const Point_2d& b,
@@ -1117,7 +1129,7 @@ private:
     const std::size_t n = cyc.size();
     const std::size_t a = cyc[(i + n - 1) % n], b = cyc[i], c1 = cyc[(i + 1) % n];
     if(n < 8 || a >= known || b >= known || c1 >= known || m_fixed[b] || quads_at[b].size() != 1
-       || right_side_angle(m_xy[a], m_xy[b], m_xy[c1]) <= 225.0 + angle_tolerance || near_input_corner(b))
+       || right_side_angle(m_xy[a], m_xy[b], m_xy[c1]) <= 225.0 + rounding_tolerance(a, b, c1) || near_input_corner(b))
       return false;
     const std::size_t q = *quads_at[b].begin();
     if(split[q]) return false;
