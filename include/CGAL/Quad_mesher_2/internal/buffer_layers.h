@@ -1100,12 +1100,7 @@ private:
     if(!found) return;
     pattern_search(best_y, s, consider);
     // Y is a core point like the others (the first buffer points come after the core's)
-    const std::size_t y = add_point(best_y);
-    m_size.push_back(m_size[b]);
-    m_on_cycle.push_back(1);
-    m_fixed.push_back(0);
-    m_shaped.push_back(0);
-    m_cleared_xy.push_back(best_y);
+    const std::size_t y = add_core_point(best_y, m_size[b], true);
     m_on_cycle[b] = 0;
     m_core_points = m_mesh.points.size();
     add_quad({ b, a, y, c1 });
@@ -1156,18 +1151,9 @@ private:
       return true;
     });
     if(least > 45.0 + core_slack) return false;
-    auto add_core_point = [&](const Point_2d& p, bool on_boundary) {
-      const std::size_t v = add_point(p);
-      m_size.push_back(m_size[b]);
-      m_on_cycle.push_back(on_boundary ? 1 : 0);
-      m_fixed.push_back(0);
-      m_shaped.push_back(0);
-      m_cleared_xy.push_back(p);
-      return v;
-    };
-    const std::size_t ma = add_core_point(pa, true);
-    const std::size_t mc = add_core_point(pc, true);
-    const std::size_t o = add_core_point(centre, false);
+    const std::size_t ma = add_core_point(pa, m_size[b], true);
+    const std::size_t mc = add_core_point(pc, m_size[b], true);
+    const std::size_t o = add_core_point(centre, m_size[b], false);
     m_core_points = m_mesh.points.size();
     m_mesh.quads[q] = { b, mc, o, ma };
     add_quad({ mc, c1, x, o });
@@ -1327,6 +1313,19 @@ private:
   }
 
   void add_quad(const Quad& q) { m_mesh.quads.push_back(q); }
+
+  // a new core point of local size `size` (the templates' new quads: the first buffer points
+  // come after every core point)
+  std::size_t add_core_point(const Point_2d& p, double size, bool on_boundary)
+  {
+    const std::size_t v = add_point(p);
+    m_size.push_back(size);
+    m_on_cycle.push_back(on_boundary ? 1 : 0);
+    m_fixed.push_back(0);
+    m_shaped.push_back(0);
+    m_cleared_xy.push_back(p);
+    return v;
+  }
 
   double input_corner_angle(std::size_t v) const
   {
