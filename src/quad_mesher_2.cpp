@@ -134,7 +134,8 @@ void print_round(std::ostream& out, const Figures& f)
   out << "round " << f.round << ": " << f.quads << " quads, " << (f.valid ? "valid" : "invalid") << ", "
       << f.invalid_quads << " buffer quads not convex, " << f.bad_angle_quads << " with an unforced angle out ("
       << f.bad_angle_quads_by_layer[0] << " core, " << f.bad_angle_quads_by_layer[1] << " first layer, "
-      << f.bad_angle_quads_by_layer[2] << " second layer), " << f.refinement_requests << " refinement requests, " << f.seconds << " s" << std::endl;
+      << f.bad_angle_quads_by_layer[2] << " second layer), " << f.refinement_requests << " refinement requests, "
+      << f.seconds << " s" << std::endl;
 }
 
 template <class K>

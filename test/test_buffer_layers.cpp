@@ -951,21 +951,25 @@ std::size_t corners_not_left(const Mesh& m)
   return bad;
 }
 
-// the buffer-side angle at each core boundary vertex (degrees; the core on the left of its
-// boundary, so the buffer is on the right)
-std::vector<double> buffer_side_angles(const Mesh& m)
+// the buffer-side angle at each core boundary vertex, by vertex (degrees; the core on the
+// left of its boundary, so the buffer is on the right)
+std::map<std::size_t, double> buffer_side_angles_at(const Mesh& m)
 {
   const auto b = boundary_edges(m.quads);
-  std::map<std::size_t, std::size_t> next, prev;
-  for(const auto& e : b) {
-    next[e.first] = e.second;
-    prev[e.second] = e.first;
-  }
-  std::vector<double> angles;
+  std::map<std::size_t, std::size_t> prev;
+  for(const auto& e : b) prev[e.second] = e.first;
+  std::map<std::size_t, double> angles;
   for(const auto& e : b)
-    angles.push_back(QM::internal::right_side_angle(QM::internal::to_point_2d(m.points[prev[e.first]]),
-                                                    QM::internal::to_point_2d(m.points[e.first]),
-                                                    QM::internal::to_point_2d(m.points[e.second])));
+    angles[e.first] = QM::internal::right_side_angle(QM::internal::to_point_2d(m.points[prev[e.first]]),
+                                                     QM::internal::to_point_2d(m.points[e.first]),
+                                                     QM::internal::to_point_2d(m.points[e.second]));
+  return angles;
+}
+
+std::vector<double> buffer_side_angles(const Mesh& m)
+{
+  std::vector<double> angles;
+  for(const auto& [v, beta] : buffer_side_angles_at(m)) angles.push_back(beta);
   return angles;
 }
 
@@ -1203,16 +1207,12 @@ TEST(Buffer_layers, a_jammed_convex_corner_is_split_in_three)
   EXPECT_EQ(mesher.buffer_report().buffer_angles_out_away_from_corners, 0u);
   // the corner's vertex is still a core boundary vertex, now within [112.5, 225]
   const P2d corner{ 0.0709781647, -0.0455716451 };
-  const auto edges = boundary_edges(templates.quads);
-  std::map<std::size_t, std::size_t> prev;
-  for(const auto& e : edges) prev[e.second] = e.first;
-  auto xy = [&](std::size_t v) { return QM::internal::to_point_2d(templates.points[v]); };
   double nearest = HUGE_VAL, beta = 0;
-  for(const auto& e : edges) {
-    const double d = QM::internal::length_2d(QM::internal::minus_2d(xy(e.first), corner));
+  for(const auto& [v, angle] : buffer_side_angles_at(templates)) {
+    const double d = QM::internal::length_2d(QM::internal::minus_2d(QM::internal::to_point_2d(templates.points[v]), corner));
     if(d < nearest) {
       nearest = d;
-      beta = QM::internal::right_side_angle(xy(prev[e.first]), xy(e.first), xy(e.second));
+      beta = angle;
     }
   }
   EXPECT_LT(nearest, 1e-3);

@@ -84,6 +84,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -535,9 +536,9 @@ public:
       for(std::size_t i = 0; i < m_cycles[c].size(); ++i)
         fill_notch(c, i);
     {
-      const Vertex_quads quads_at(m_mesh.quads, m_mesh.points.size());
-      const std::size_t known = m_mesh.points.size(); // quads_at knows these
-      std::vector<char> split(m_mesh.quads.size(), 0);
+      std::optional<Vertex_quads> quads_at; // made for the first corner over 225 degrees, if any
+      std::size_t known = 0;
+      std::vector<char> split;
       for(std::size_t c = 0; c < m_cycles.size(); ++c)
         for(std::size_t i = 0; i < m_cycles[c].size(); ++i)
           if(split_corner(c, i, quads_at, known, split)) ++i; // past the corner, now between its new points
@@ -1116,17 +1117,24 @@ private:
   // the new points' betas 180). B's quad then shares no corner with the template that jammed
   // it, and the search moves B in as template 1(b) would, O giving way: a kite at B. Not where
   // no centre keeps the three quads within [45, 135].
-  // (`quads_at` knows the first `known` points; `split` marks the quads split before.)
-  bool split_corner(std::size_t c, std::size_t i, const Vertex_quads& quads_at, std::size_t known,
+  // (`quads_at`, made at the first candidate, knows the first `known` points: a million-quad
+  // core seldom has a candidate; `split` marks the quads split before.)
+  bool split_corner(std::size_t c, std::size_t i, std::optional<Vertex_quads>& quads_at, std::size_t& known,
                     std::vector<char>& split)
   {
     auto& cyc = m_cycles[c];
     const std::size_t n = cyc.size();
     const std::size_t a = cyc[(i + n - 1) % n], b = cyc[i], c1 = cyc[(i + 1) % n];
-    if(n < 8 || a >= known || b >= known || c1 >= known || m_fixed[b] || quads_at[b].size() != 1
-       || right_side_angle(m_xy[a], m_xy[b], m_xy[c1]) <= 225.0 + rounding_tolerance(a, b, c1) || near_input_corner(b))
+    if(n < 8 || m_fixed[b] || right_side_angle(m_xy[a], m_xy[b], m_xy[c1]) <= 225.0 + rounding_tolerance(a, b, c1)
+       || near_input_corner(b))
       return false;
-    const std::size_t q = *quads_at[b].begin();
+    if(!quads_at) {
+      quads_at.emplace(m_mesh.quads, m_mesh.points.size());
+      known = m_mesh.points.size();
+      split.assign(m_mesh.quads.size(), 0);
+    }
+    if(a >= known || b >= known || c1 >= known || (*quads_at)[b].size() != 1) return false;
+    const std::size_t q = *(*quads_at)[b].begin();
     if(split[q]) return false;
     split[q] = 1;
     const Quad Q = m_mesh.quads[q];
