@@ -23,6 +23,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -31,6 +32,7 @@
 #include <random>
 #include <set>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -873,6 +875,38 @@ TEST(Buffer_layers, a_grid_of_square_holes_meets_45_135)
 TEST(Buffer_layers, dumbbell_with_a_narrow_channel_meets_45_135)
 {
   expect_angles_45_135(mesh_and_check(polygons({ dumbbell() }, {}), "dumbbell"), "dumbbell");
+}
+
+// Arms 0.126 and 0.13 wide turned near 45 degrees (an L and a cross): about 4.2 cells across,
+// where the clearance left a staircase one cell thick and peeled it whole from the arm's dead
+// end. The core stopped 0.3 short of the end and one buffer quad spanned the rest (19.9
+// degrees at the L's end; the refinement at its corners never brought the core back, six
+// rounds). Refining over such a quad's whole area does, in one more round.
+TEST(Buffer_layers, arms_turned_near_45_degrees_meet_45_135)
+{
+  auto turned = [](const std::vector<std::array<double, 2>>& p, double degrees) {
+    const double c = std::cos(degrees * pi / 180), s = std::sin(degrees * pi / 180);
+    std::vector<Point> q;
+    for(const auto& xy : p) q.emplace_back(c * xy[0] - s * xy[1], s * xy[0] + c * xy[1]);
+    return q;
+  };
+  auto ell = [](double w) {
+    return std::vector<std::array<double, 2>>{ { 0, 0 }, { 1, 0 }, { 1, w }, { w, w }, { w, 1 }, { 0, 1 } };
+  };
+  auto cross = [](double w) {
+    const double a = w / 2;
+    return std::vector<std::array<double, 2>>{ { -1, -a }, { -a, -a }, { -a, -1 }, { a, -1 }, { a, -a }, { 1, -a },
+                                               { 1, a },   { a, a },   { a, 1 },   { -a, 1 }, { -a, a }, { -1, a } };
+  };
+  for(const auto& [name, width, degrees] :
+      std::vector<std::tuple<std::string, double, double>>{ { "L", 0.13, 45.37 }, { "L", 0.13, 45.87 },
+                                                            { "L", 0.126, 45.87 }, { "L", 0.126, 26.37 },
+                                                            { "cross", 0.13, 45.37 }, { "cross", 0.13, 44.37 },
+                                                            { "cross", 0.126, 44.37 }, { "cross", 0.126, 45.87 } }) {
+    const std::string label = name + " " + std::to_string(width) + " turned " + std::to_string(degrees);
+    const Domain d = polygons({ turned(name == "L" ? ell(width) : cross(width), degrees) });
+    expect_angles_45_135(mesh_and_check(d, label), label);
+  }
 }
 
 // An ellipse 1 long and 0.03 wide (semi-axes), 200 points: a thin sliver whose strips are
