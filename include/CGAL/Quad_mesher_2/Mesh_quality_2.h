@@ -185,9 +185,10 @@ private:
 /// ones (a quadtree's vertices share their x by the thousand, so a sweep along x alone would
 /// compare each with its whole column). With `exact`, also counts into it the used vertices
 /// equal to another (each group of equal ones counts its size less one): the sort puts them
-/// side by side.
+/// side by side. With `where`, appends one point of each pair to it.
 inline std::size_t count_near_duplicate_pairs(const std::vector<Point_2d>& pts, const std::vector<char>& used,
-                                              const Point_2d& lo, double tol, std::size_t* exact = nullptr)
+                                              const Point_2d& lo, double tol, std::size_t* exact = nullptr,
+                                              std::vector<Point_2d>* where = nullptr)
 {
   struct Entry
   {
@@ -207,7 +208,11 @@ inline std::size_t count_near_duplicate_pairs(const std::vector<Point_2d>& pts, 
   if(exact != nullptr)
     for(std::size_t i = 1; i < sorted.size(); ++i)
       *exact += sorted[i].x == sorted[i - 1].x && sorted[i].y == sorted[i - 1].y ? 1 : 0;
-  auto near = [&](const Entry& a, const Entry& b) { return std::abs(a.x - b.x) <= tol && std::abs(a.y - b.y) <= tol; };
+  auto near = [&](const Entry& a, const Entry& b) {
+    const bool is_near = std::abs(a.x - b.x) <= tol && std::abs(a.y - b.y) <= tol;
+    if(is_near && where != nullptr) where->push_back(Point_2d{ a.x, a.y });
+    return is_near;
+  };
   std::size_t count = 0;
   for(std::size_t first = 0; first < sorted.size();) { // one column [first, last) at a time
     std::size_t last = first;
@@ -238,12 +243,13 @@ inline std::size_t count_near_duplicate_pairs(const std::vector<Point_2d>& pts, 
 /// every edge there: minutes, on 600k quads). The vertices ask in blocks of consecutive
 /// indices, one query per block: a mesh numbers its vertices mostly in spatial order, and the
 /// edges (used once, the boundary) are few, so most blocks meet none and cost that one query.
+/// With `where`, appends each such vertex's point to it.
 template <class Quads>
 std::size_t count_hanging_nodes(const std::vector<Point_2d>& pts,
                                 const std::vector<char>& used,
                                 const Quads& quads,
                                 const std::vector<std::size_t>& edges,
-                                double tol)
+                                double tol, std::vector<Point_2d>* where = nullptr)
 {
   if(edges.empty() || !(tol > 0))
     return 0;
@@ -301,8 +307,16 @@ std::size_t count_hanging_nodes(const std::vector<Point_2d>& pts,
           if(CGAL::do_overlap(point_box(v), edge_boxes[i]))
             test(v, i);
   }
+  if(where != nullptr)
+    for(std::size_t v = 0; v < pts.size(); ++v)
+      if(hanging[v]) where->push_back(pts[v]);
   return std::size_t(std::count(hanging.begin(), hanging.end(), char(1)));
 }
+
+/// `compute_quality()`, and with `where` the places of its near-duplicate vertices (one of
+/// each pair) and hanging nodes, which a mesher can refine
+template <class Point_2>
+Mesh_quality_2 compute_quality(const Quad_mesh_2<Point_2>& mesh, std::vector<Point_2d>* where);
 
 } // namespace internal
 
@@ -311,6 +325,12 @@ std::size_t count_hanging_nodes(const std::vector<Point_2d>& pts,
 /// Runs in roughly linear time: about 0.35 s for 10^6 quads.
 template <class Point_2>
 Mesh_quality_2 compute_quality(const Quad_mesh_2<Point_2>& mesh)
+{
+  return internal::compute_quality(mesh, nullptr);
+}
+
+template <class Point_2>
+Mesh_quality_2 internal::compute_quality(const Quad_mesh_2<Point_2>& mesh, std::vector<Point_2d>* where)
 {
   using internal::Point_2d;
   const std::size_t np = mesh.points.size();
@@ -468,7 +488,7 @@ Mesh_quality_2 compute_quality(const Quad_mesh_2<Point_2>& mesh)
   // which are all of them in a mesher's output; otherwise sort all by coordinates.
   std::size_t used_duplicates = 0;
   r.number_of_near_duplicate_vertices = internal::count_near_duplicate_pairs(
-    pts, used, lo, 1e-9 * internal::length_2d(internal::minus_2d(hi, lo)), &used_duplicates);
+    pts, used, lo, 1e-9 * internal::length_2d(internal::minus_2d(hi, lo)), &used_duplicates, where);
   if(r.number_of_unused_vertices == 0) {
     r.number_of_duplicate_vertices = used_duplicates;
   } else {
@@ -565,7 +585,7 @@ Mesh_quality_2 compute_quality(const Quad_mesh_2<Point_2>& mesh)
   // Hanging nodes: used vertices in the interior of a used-once edge of another quad.
   const double diag = internal::length_2d(internal::minus_2d(hi, lo));
   r.number_of_hanging_nodes =
-    internal::count_hanging_nodes(pts, used, mesh.quads, boundary, 1e-9 * diag);
+    internal::count_hanging_nodes(pts, used, mesh.quads, boundary, 1e-9 * diag, where);
 
   return r;
 }
