@@ -127,6 +127,26 @@ nlohmann::json by_layer(const std::array<std::size_t, 3>& n)
   return { { "core", n[0] }, { "first_layer", n[1] }, { "second_layer", n[2] } };
 }
 
+// why the refinement rounds ended: the report's name for it, and the warning's words
+template <class Mesher>
+std::pair<std::string, std::string> rounds_end_text(const Mesher& mesher)
+{
+  typedef typename Mesher::Rounds_end End;
+  switch(mesher.rounds_end()) {
+  case End::STALLED:
+    return { "stalled", std::to_string(Mesher::max_stalled_angle_rounds)
+                          + " refinement rounds did not lower their count (see -v)" };
+  case End::ROUND_BUDGET:
+    return { "round budget", "the refinement rounds reached their budget of "
+                               + std::to_string(Mesher::max_refinement_rounds) };
+  case End::FINEST_CELLS:
+    return { "finest cells", "refining there needs cells finer than the quadtree may make ("
+                               + mesher.quadtree().depth_limit() + ")" };
+  default:
+    return { "none", "" };
+  }
+}
+
 // one refinement round as -v prints it, when it ends
 template <class Figures>
 void print_round(std::ostream& out, const Figures& f)
@@ -284,9 +304,11 @@ int run(const Options& opt)
                          { "refinement_requests", f.refinement_requests },
                          { "seconds", f.seconds } });
     report["rounds"] = rounds;
+    const auto [rounds_end, why] = rounds_end_text(mesher);
+    report["buffer"]["rounds_end"] = rounds_end;
     if(b.bad_angle_quads > 0)
       std::cerr << "quad-mesher: " << opt.input << ": warning: " << b.bad_angle_quads
-                << " buffer quads have an angle outside [45, 135] that no input corner forces\n";
+                << " buffer quads have an angle outside [45, 135] that no input corner forces: " << why << "\n";
   }
   report["points_as_vertices"] = mesher.point_vertices().size();
   report["max_aspect_ratio_at_points"] = QM::max_aspect_ratio_around(mesh, mesher.point_vertices());

@@ -912,22 +912,28 @@ TEST(Buffer_layers, dumbbell_with_a_narrow_channel_meets_45_135)
 // end. The core stopped 0.3 short of the end and one buffer quad spanned the rest (19.9
 // degrees at the L's end; the refinement at its corners never brought the core back, six
 // rounds). Refining over such a quad's whole area does, in one more round.
+std::vector<Point> turned(const std::vector<std::array<double, 2>>& p, double degrees)
+{
+  const double c = std::cos(degrees * pi / 180), s = std::sin(degrees * pi / 180);
+  std::vector<Point> q;
+  for(const auto& xy : p) q.emplace_back(c * xy[0] - s * xy[1], s * xy[0] + c * xy[1]);
+  return q;
+}
+
+// an L with arms of width w and length 1, and a cross of arms w wide, 2 across
+std::vector<std::array<double, 2>> ell(double w)
+{
+  return { { 0, 0 }, { 1, 0 }, { 1, w }, { w, w }, { w, 1 }, { 0, 1 } };
+}
+std::vector<std::array<double, 2>> cross(double w)
+{
+  const double a = w / 2;
+  return { { -1, -a }, { -a, -a }, { -a, -1 }, { a, -1 }, { a, -a }, { 1, -a },
+           { 1, a },   { a, a },   { a, 1 },   { -a, 1 }, { -a, a }, { -1, a } };
+}
+
 TEST(Buffer_layers, arms_turned_near_45_degrees_meet_45_135)
 {
-  auto turned = [](const std::vector<std::array<double, 2>>& p, double degrees) {
-    const double c = std::cos(degrees * pi / 180), s = std::sin(degrees * pi / 180);
-    std::vector<Point> q;
-    for(const auto& xy : p) q.emplace_back(c * xy[0] - s * xy[1], s * xy[0] + c * xy[1]);
-    return q;
-  };
-  auto ell = [](double w) {
-    return std::vector<std::array<double, 2>>{ { 0, 0 }, { 1, 0 }, { 1, w }, { w, w }, { w, 1 }, { 0, 1 } };
-  };
-  auto cross = [](double w) {
-    const double a = w / 2;
-    return std::vector<std::array<double, 2>>{ { -1, -a }, { -a, -a }, { -a, -1 }, { a, -1 }, { a, -a }, { 1, -a },
-                                               { 1, a },   { a, a },   { a, 1 },   { -a, 1 }, { -a, a }, { -1, a } };
-  };
   for(const auto& [name, width, degrees] :
       std::vector<std::tuple<std::string, double, double>>{ { "L", 0.13, 45.37 }, { "L", 0.13, 45.87 },
                                                             { "L", 0.126, 45.87 }, { "L", 0.126, 26.37 },
@@ -937,6 +943,21 @@ TEST(Buffer_layers, arms_turned_near_45_degrees_meet_45_135)
     const Domain d = polygons({ turned(name == "L" ? ell(width) : cross(width), degrees) });
     expect_angles_45_135(mesh_and_check(d, label), label);
   }
+}
+
+// The rounds say why they ended with quads out: the first L above, at most 6 levels deep
+// (its arms' ends need 7), cannot be refined where its quads are out.
+TEST(Buffer_layers, the_rounds_say_why_they_end)
+{
+  const Domain d = polygons({ turned(ell(0.13), 45.37) });
+  Mesher shallow(d, QM::Mesh_criteria_2<K>(0, 0, 6));
+  shallow.run(Stage::BUFFER2);
+  EXPECT_GT(shallow.buffer_report().bad_angle_quads, 0u);
+  EXPECT_EQ(shallow.rounds_end(), Mesher::Rounds_end::FINEST_CELLS);
+  Mesher deep(d);
+  deep.run(Stage::BUFFER2);
+  EXPECT_EQ(deep.buffer_report().bad_angle_quads, 0u);
+  EXPECT_EQ(deep.rounds_end(), Mesher::Rounds_end::NONE);
 }
 
 // An ellipse 1 long and 0.03 wide (semi-axes), 200 points: a thin sliver whose strips are

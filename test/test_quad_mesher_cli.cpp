@@ -406,6 +406,30 @@ TEST(quad_mesher_cli, verbose_prints_each_round)
   EXPECT_EQ(listed[std::size_t(rounds - 1)]["quads_outside_45_135_not_forced"].get<int>(), 0);
 }
 
+// An L with arms 0.13 wide turned 45.37 degrees: its arms' ends need a refinement round
+// (cells at depth 7). At most 6 levels deep the rounds cannot refine there; the warning and
+// the report say so, and say nothing when the rounds leave no quad out.
+TEST(quad_mesher_cli, the_warning_says_why_the_rounds_left_angles_out)
+{
+  const auto poly = scratch("ell.poly");
+  std::ofstream(poly) << "6 2 0 0\n1 0 0\n2 0.70252577269438166 0.7116583019259749\n"
+                         "3 0.61001019344400498 0.80298665237624456\n4 -0.001187228800107118 0.18384392970064634\n"
+                         "5 -0.62032995147570524 0.79504135194475833\n6 -0.7116583019259749 0.70252577269438166\n"
+                         "6 0\n1 1 2\n2 2 3\n3 3 4\n4 4 5\n5 5 6\n6 6 1\n0\n";
+  const auto json = scratch("ell.json");
+  Cli_run shallow = run(poly.string() + " -o " + scratch("ell.off").string() + " --max-depth 6 --report " + json.string());
+  ASSERT_EQ(shallow.status, 0) << shallow.err;
+  EXPECT_NE(shallow.err.find("that no input corner forces: refining there needs cells finer than the quadtree may "
+                             "make (the maximum depth 6)"),
+            std::string::npos)
+    << shallow.err;
+  EXPECT_EQ(nlohmann::json::parse(slurp(json))["buffer"]["rounds_end"], "finest cells");
+  Cli_run deep = run(poly.string() + " -o " + scratch("ell.off").string() + " --report " + json.string());
+  ASSERT_EQ(deep.status, 0) << deep.err;
+  EXPECT_EQ(deep.err.find("warning"), std::string::npos) << deep.err;
+  EXPECT_EQ(nlohmann::json::parse(slurp(json))["buffer"]["rounds_end"], "none");
+}
+
 } // namespace qm2_test_cli
 
 #endif // QM2_CLI_PATH

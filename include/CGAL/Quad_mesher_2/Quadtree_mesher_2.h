@@ -284,6 +284,7 @@ public:
     m_requests_applied = 0;
     m_round_figures.clear();
     m_quality.reset();
+    m_rounds_end = Rounds_end::NONE;
     internal::Angle_rounds angle_rounds(max_stalled_angle_rounds);
     // the best valid round's mesh and state, kept while later rounds try for better angles:
     // building it again would cost a whole round
@@ -302,6 +303,7 @@ public:
       const bool repeats = m_rounds > 1 && !m_requests_refined;
       if(repeats && !repeat_error.empty()) {
         --m_rounds;
+        m_rounds_end = Rounds_end::FINEST_CELLS;
         if(angle_rounds.has_valid_round())
           return restore_round(std::move(best));
         throw Meshing_error(repeat_error);
@@ -322,6 +324,7 @@ public:
           repeat_error = lost_point_error(requests);
           continue;
         }
+        m_rounds_end = m_rounds < max_refinement_rounds ? Rounds_end::FINEST_CELLS : Rounds_end::ROUND_BUDGET;
         if(angle_rounds.has_valid_round())
           return restore_round(std::move(best));
         throw Meshing_error(lost_point_error(requests));
@@ -363,6 +366,9 @@ public:
         repeat_error = valid ? std::string() : buffer_error(requests, true);
         continue;
       }
+      m_rounds_end = added == 0 || repeats                ? Rounds_end::FINEST_CELLS
+                     : m_rounds >= max_refinement_rounds ? Rounds_end::ROUND_BUDGET
+                                                         : Rounds_end::STALLED;
       if(valid && m_buffer_report.bad_angle_quads == angle_rounds.best())
         return mesh; // angles outside [45, 135] stay; the quality report shows them
       if(angle_rounds.has_valid_round())
@@ -377,6 +383,16 @@ public:
   const std::optional<Mesh_quality_2>& quality() const { return m_quality; }
   /// how many times `run()` built the quadtree (1 + refinement rounds for the buffer layers)
   int rounds() const { return m_rounds; }
+  /// why the refinement rounds of the last `run()` ended, if they left quads with an angle
+  /// outside [45°, 135°] that no input corner forces (or gave up on an invalid round)
+  enum class Rounds_end
+  {
+    NONE,         ///< they did not end that way: no such quad, or a run stopped before `BUFFER2`
+    STALLED,      ///< `max_stalled_angle_rounds` valid rounds did not lower the count of such quads
+    ROUND_BUDGET, ///< the quadtree was built `max_refinement_rounds` times
+    FINEST_CELLS  ///< the cells asked for are finer than the quadtree may make (its depth)
+  };
+  Rounds_end rounds_end() const { return m_rounds_end; }
   /// what one round of `run()` past the clearance found: how it went decides the next
   struct Round_figures
   {
@@ -884,6 +900,7 @@ private:
   std::vector<std::size_t> m_lost_points; // by anchored point: see clear_buffer_zone()
   std::vector<std::size_t> m_point_names; // the input index of each anchored point
   int m_rounds = 0;
+  Rounds_end m_rounds_end = Rounds_end::NONE;
   std::vector<Round_figures> m_round_figures;
   Round_observer m_round_observer;
   Timings m_timings;
