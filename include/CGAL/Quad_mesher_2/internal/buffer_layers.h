@@ -777,7 +777,9 @@ public:
             requests.emplace_back(m_xy[b], m_size[b]);
             size = (std::min)(size, m_size[b]);
           }
-        request_over_area(P, size, requests);
+        // not for an invalid quad: a broken buffer's quads can span tens of cells each, and
+        // their corners' cells suffice (a disc with thin elliptic holes asked for 1.8 million)
+        if(valid) request_over_area(P, size, requests);
       }
     }
   }
@@ -796,10 +798,10 @@ public:
       x0 = (std::min)(x0, p.x); x1 = (std::max)(x1, p.x);
       y0 = (std::min)(y0, p.y); y1 = (std::max)(y1, p.y);
     }
-    // a cell's few times: the corners' requests suffice; and a bound on the requests
+    // a cell's few times: the corners' requests suffice; and at most 64 requests a quad
     const double span = (std::max)(x1 - x0, y1 - y0);
     if(span <= 4 * size) return;
-    const double step = (std::max)(size, span / 64);
+    const double step = (std::max)(size, span / 8);
     for(double x = x0 + step / 2; x < x1; x += step)
       for(double y = y0 + step / 2; y < y1; y += step)
         requests.emplace_back(Point_2d{ x, y }, size);
