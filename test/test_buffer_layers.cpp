@@ -741,6 +741,25 @@ TEST(Buffer_layers, multi_element_airfoils_meet_45_135)
   }
 }
 
+// `d` turned by `degrees` and scaled by `scale` about the centroid of its points (as a user
+// sets an air foil's angle of attack), in the order of operations of the sweeps that found
+// the cases below, so that their doubles are the same
+Domain turned_about_centroid(Domain d, double degrees, double scale)
+{
+  double cx = 0, cy = 0;
+  for(const Point& p : d.points) { cx += to_d(p.x()); cy += to_d(p.y()); }
+  cx /= double(d.points.size());
+  cy /= double(d.points.size());
+  const double turn = degrees * (pi / 180), c = scale * std::cos(turn), s = scale * std::sin(turn);
+  auto move = [&](const Point& p) {
+    const double x = to_d(p.x()) - cx, y = to_d(p.y()) - cy;
+    return Point(cx + c * x - s * y, cy + s * x + c * y);
+  };
+  for(Point& p : d.points) p = move(p);
+  for(Point& p : d.holes) p = move(p);
+  return d;
+}
+
 // The 30P30N turned 11 degrees about its vertices' centroid and scaled by 1.37 (as a user
 // sets an angle of attack): in its third round two elements' buffer nodes met across a slot,
 // a hanging node the whole-mesh check found but no buffer check asked to refine, and the
@@ -750,18 +769,7 @@ TEST(Buffer_layers, where_the_whole_mesh_check_fails_is_refined)
   const std::string name = "airfoil_30p30n/airfoil_30p30n.poly";
   if(!std::ifstream(std::string(QM2_SHARED_DATA_DIR) + "/" + name))
     GTEST_SKIP() << "no " << name << " in the shared data";
-  Domain d = load(name);
-  double cx = 0, cy = 0;
-  for(const Point& p : d.points) { cx += to_d(p.x()); cy += to_d(p.y()); }
-  cx /= double(d.points.size());
-  cy /= double(d.points.size());
-  const double turn = 11 * (pi / 180), c = 1.37 * std::cos(turn), s = 1.37 * std::sin(turn);
-  auto move = [&](const Point& p) {
-    const double x = to_d(p.x()) - cx, y = to_d(p.y()) - cy;
-    return Point(cx + c * x - s * y, cy + s * x + c * y);
-  };
-  for(Point& p : d.points) p = move(p);
-  for(Point& p : d.holes) p = move(p);
+  const Domain d = turned_about_centroid(load(name), 11, 1.37);
   Mesher mesher(d);
   const Mesh m = mesher.run(Stage::BUFFER2);
   expect_angles_45_135(check_whole_domain(d, m, "30P30N turned 11, x1.37"), "30P30N turned 11, x1.37");
@@ -769,6 +777,33 @@ TEST(Buffer_layers, where_the_whole_mesh_check_fails_is_refined)
   for(const auto& r : mesher.round_figures())
     refined_for_the_check = refined_for_the_check || (!r.valid && r.invalid_quads == 0 && r.refinement_requests > 0);
   EXPECT_TRUE(refined_for_the_check);
+}
+
+// A reflex tip's fan of three: its outer F points came from the core at about 90 degrees to
+// the boundary and left the middle quad the rest, and no refinement round balanced it. The
+// 30P30N turned 123 degrees and scaled by 7.3 (about the origin): slivers of 28.6 degrees at
+// a slat cusp; the 3-element air foil turned 41 degrees and scaled by 7.3 about its vertices'
+// centroid: 88, 144 and 88 degrees at a 320-degree trailing edge. The outer F points now
+// turn about the corner.
+TEST(Buffer_layers, fans_at_reflex_tips_turn_their_outer_points)
+{
+  const std::string slats = "airfoil_30p30n/airfoil_30p30n.poly";
+  if(!std::ifstream(std::string(QM2_SHARED_DATA_DIR) + "/" + slats))
+    GTEST_SKIP() << "no " << slats << " in the shared data";
+  Domain d = load(slats);
+  const double turn = 123 * (pi / 180), c = std::cos(turn), s = std::sin(turn);
+  auto move = [&](const Point& p) {
+    const double x = to_d(p.x()), y = to_d(p.y());
+    return Point(7.3 * (c * x - s * y), 7.3 * (s * x + c * y));
+  };
+  for(Point& p : d.points) p = move(p);
+  for(Point& p : d.holes) p = move(p);
+  expect_angles_45_135(mesh_and_check(d, "30P30N turned 123, x7.3"), "30P30N turned 123, x7.3");
+  const std::string three = "airfoil_3elem_jigsaw/airfoil_3elem_jigsaw.poly";
+  if(!std::ifstream(std::string(QM2_SHARED_DATA_DIR) + "/" + three))
+    GTEST_SKIP() << "no " << three << " in the shared data";
+  expect_angles_45_135(mesh_and_check(turned_about_centroid(load(three), 41, 7.3), "3-element turned 41, x7.3"),
+                       "3-element turned 41, x7.3");
 }
 
 // no angle of `m` over 135 degrees, and every one under 45 at an input point of `d`, within

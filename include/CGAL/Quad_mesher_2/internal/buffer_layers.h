@@ -2085,7 +2085,8 @@ private:
           last_kept = (std::min)(b, first_kept + kept - 1);
           anchor = first_kept;
           if(last_kept == first_kept + 2 && !needle)
-            open_fan(c, rot(first_kept), rot(first_kept + 1), rot(last_kept), loop_xy[k]);
+            open_fan(c, rot(first_kept), rot(first_kept + 1), rot(last_kept), loop_xy[k],
+                     loop_xy[(k + nv - 1) % nv], loop_xy[(k + 1) % nv]);
         }
         auto spacing = [&](std::size_t r1, std::size_t r2) {
           return length_2d(minus_2d(F[rot(r1)], F[rot(r2)]));
@@ -2510,28 +2511,74 @@ private:
   // middle quad is flat (greenland's 300-degree corner at (255, 350.5): 25 degrees). The
   // middle F point moves towards the far corner of the parallelogram on the corner and the
   // other two while that lowers the worst of that quad and its two first-layer quads.
-  void open_fan(std::size_t c, std::size_t a, std::size_t m, std::size_t b, const Point_2d& corner)
+  //
+  // The fan's outer F points come from the core too and may leave their side quads near 90
+  // degrees at the corner and the middle quad the rest (a 320-degree trailing edge: 88, 144,
+  // 88). Each then turns about the corner, at its distance from it, while that lowers the worst
+  // of the middle quad, the first-layer quads at it and the angles at the corner between it and
+  // the boundary (its side quad's), then the middle point moves again.
+  void open_fan(std::size_t c, std::size_t a, std::size_t m, std::size_t b, const Point_2d& corner,
+                const Point_2d& before, const Point_2d& after)
   {
     const auto& cyc = m_cycles[c];
     auto& F = m_first[c];
-    auto worst = [&](const Point_2d& f) {
-      return (std::max)({ quad_badness({ corner, F[b], f, F[a] }),
-                          quad_badness({ m_xy[cyc[a]], F[a], f, m_xy[cyc[m]] }),
-                          quad_badness({ m_xy[cyc[m]], f, F[b], m_xy[cyc[b]] }) });
+    const std::size_t n = cyc.size();
+    const std::size_t a0 = (a + n - 1) % n, b1 = (b + 1) % n;
+    auto side_badness = [&](const Point_2d& f) { // at the corner, between f and the nearer side
+      const Point_2d u = minus_2d(f, corner);
+      double to_side = 180;
+      for(const Point_2d& s : { before, after }) {
+        const Point_2d v = minus_2d(s, corner);
+        to_side = (std::min)(to_side, std::atan2(std::abs(cross_2d(u, v)), dot_2d(u, v)) * 180 / pi);
+      }
+      return std::abs(to_side - 90);
     };
-    const Point_2d target{ F[a].x + F[b].x - corner.x, F[a].y + F[b].y - corner.y };
-    Point_2d best_f = F[m];
-    double best = worst(F[m]);
+    auto worst = [&]() {
+      return (std::max)({ quad_badness({ corner, F[b], F[m], F[a] }),
+                          quad_badness({ m_xy[cyc[a]], F[a], F[m], m_xy[cyc[m]] }),
+                          quad_badness({ m_xy[cyc[m]], F[m], F[b], m_xy[cyc[b]] }),
+                          quad_badness({ m_xy[cyc[a0]], F[a0], F[a], m_xy[cyc[a]] }),
+                          quad_badness({ m_xy[cyc[b]], F[b], F[b1], m_xy[cyc[b1]] }),
+                          side_badness(F[a]), side_badness(F[b]) });
+    };
+    const std::array<Point_2d, 3> before_move{ { F[a], F[m], F[b] } };
+    double best = worst();
     if(best <= 45.0) return;
-    for(double t : { 1.0, 0.75, 0.5, 0.25 }) {
-      const Point_2d f = along_2d(F[m], target, t);
-      const double w = worst(f);
-      if(w < best) { best = w; best_f = f; }
+    auto move_middle = [&]() {
+      const Point_2d from = F[m];
+      const Point_2d target{ F[a].x + F[b].x - corner.x, F[a].y + F[b].y - corner.y };
+      Point_2d best_f = from;
+      for(double t : { 1.0, 0.75, 0.5, 0.25 }) {
+        F[m] = along_2d(from, target, t);
+        const double w = worst();
+        if(w < best) { best = w; best_f = F[m]; }
+      }
+      F[m] = best_f;
+    };
+    auto turn = [&](std::size_t i) {
+      const Point_2d from = F[i], u = minus_2d(from, corner);
+      Point_2d best_f = from;
+      for(double degrees : { -30.0, -20.0, -12.0, -6.0, -3.0, 3.0, 6.0, 12.0, 20.0, 30.0 }) {
+        const double t = degrees * pi / 180, cs = std::cos(t), sn = std::sin(t);
+        F[i] = Point_2d{ corner.x + cs * u.x - sn * u.y, corner.y + sn * u.x + cs * u.y };
+        const double w = worst();
+        if(w < best) { best = w; best_f = F[i]; }
+      }
+      F[i] = best_f;
+    };
+    move_middle();
+    for(int pass = 0; pass < 3 && best > 45.0; ++pass) {
+      turn(a);
+      turn(b);
+      move_middle();
     }
-    if(best_f.x == F[m].x && best_f.y == F[m].y) return;
-    const std::size_t id = m_first_base[c] + m;
-    F[m] = m_xy[id] = best_f;
-    m_mesh.points[id] = m_traits.construct_point_2_object()(FT(best_f.x), FT(best_f.y));
+    for(int k = 0; k < 3; ++k) {
+      const std::size_t i = k == 0 ? a : k == 1 ? m : b;
+      if(F[i].x == before_move[std::size_t(k)].x && F[i].y == before_move[std::size_t(k)].y) continue;
+      const std::size_t id = m_first_base[c] + i;
+      m_xy[id] = F[i];
+      m_mesh.points[id] = m_traits.construct_point_2_object()(FT(F[i].x), FT(F[i].y));
+    }
   }
 
   // An obtuse corner (135 to 225 degrees) whose node took one first buffer point F is split
