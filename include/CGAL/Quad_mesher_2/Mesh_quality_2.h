@@ -307,10 +307,11 @@ std::size_t count_hanging_nodes(const std::vector<Point_2d>& pts,
           if(CGAL::do_overlap(point_box(v), edge_boxes[i]))
             test(v, i);
   }
-  if(where != nullptr)
+  const std::size_t count = std::size_t(std::count(hanging.begin(), hanging.end(), char(1)));
+  if(where != nullptr && count > 0)
     for(std::size_t v = 0; v < pts.size(); ++v)
       if(hanging[v]) where->push_back(pts[v]);
-  return std::size_t(std::count(hanging.begin(), hanging.end(), char(1)));
+  return count;
 }
 
 /// `compute_quality()`, and with `where` the places of its near-duplicate vertices (one of

@@ -2529,7 +2529,7 @@ private:
       double to_side = 180;
       for(const Point_2d& s : { before, after }) {
         const Point_2d v = minus_2d(s, corner);
-        to_side = (std::min)(to_side, std::atan2(std::abs(cross_2d(u, v)), dot_2d(u, v)) * 180 / pi);
+        to_side = (std::min)(to_side, angle_degrees(std::abs(cross_2d(u, v)), dot_2d(u, v)));
       }
       return std::abs(to_side - 90);
     };
@@ -2541,6 +2541,7 @@ private:
                           quad_badness({ m_xy[cyc[b]], F[b], F[b1], m_xy[cyc[b1]] }),
                           side_badness(F[a]), side_badness(F[b]) });
     };
+    const std::array<std::size_t, 3> fan{ { a, m, b } };
     const std::array<Point_2d, 3> before_move{ { F[a], F[m], F[b] } };
     double best = worst();
     if(best <= 45.0) return;
@@ -2572,9 +2573,9 @@ private:
       turn(b);
       move_middle();
     }
-    for(int k = 0; k < 3; ++k) {
-      const std::size_t i = k == 0 ? a : k == 1 ? m : b;
-      if(F[i].x == before_move[std::size_t(k)].x && F[i].y == before_move[std::size_t(k)].y) continue;
+    for(std::size_t k = 0; k < 3; ++k) {
+      const std::size_t i = fan[k];
+      if(F[i].x == before_move[k].x && F[i].y == before_move[k].y) continue;
       const std::size_t id = m_first_base[c] + i;
       m_xy[id] = F[i];
       m_mesh.points[id] = m_traits.construct_point_2_object()(FT(F[i].x), FT(F[i].y));
