@@ -779,11 +779,11 @@ TEST(Buffer_layers, where_the_whole_mesh_check_fails_is_refined)
   EXPECT_TRUE(refined_for_the_check);
 }
 
-// A reflex tip's fan of three: its outer F points came from the core at about 90 degrees to
-// the boundary and left the middle quad the rest, and no refinement round balanced it. The
+// A reflex tip's fan of three: its outer F points came from the core and left the middle quad
+// too much of the corner, and no refinement round balanced it. The
 // 30P30N turned 123 degrees and scaled by 7.3 (about the origin): slivers of 28.6 degrees at
 // a slat cusp; the 3-element air foil turned 41 degrees and scaled by 7.3 about its vertices'
-// centroid: 88, 144 and 88 degrees at a 320-degree trailing edge. The outer F points now
+// centroid: 103, 144 and 73 degrees at a 320-degree trailing edge. The outer F points now
 // turn about the corner.
 TEST(Buffer_layers, fans_at_reflex_tips_turn_their_outer_points)
 {

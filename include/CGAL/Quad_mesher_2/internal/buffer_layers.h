@@ -2512,11 +2512,11 @@ private:
   // middle F point moves towards the far corner of the parallelogram on the corner and the
   // other two while that lowers the worst of that quad and its two first-layer quads.
   //
-  // The fan's outer F points come from the core too and may leave their side quads near 90
-  // degrees at the corner and the middle quad the rest (a 320-degree trailing edge: 88, 144,
-  // 88). Each then turns about the corner, at its distance from it, while that lowers the worst
-  // of the middle quad, the first-layer quads at it and the angles at the corner between it and
-  // the boundary (its side quad's), then the middle point moves again.
+  // The fan's outer F points come from the core too and may leave the middle quad too much of
+  // the corner (a 320-degree trailing edge split 103, 144 and 73 degrees). Each then turns
+  // about the corner, at its distance from it, while that lowers the worst of the middle quad,
+  // the first-layer quads at it and the angles at the corner between it and the boundary (its
+  // side quad's), then the middle point moves again.
   void open_fan(std::size_t c, std::size_t a, std::size_t m, std::size_t b, const Point_2d& corner,
                 const Point_2d& before, const Point_2d& after)
   {
