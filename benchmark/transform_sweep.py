@@ -2,7 +2,7 @@
 """transform_sweep.py -- the angle guarantee under rotations and scalings, case by case.
 
 Usage:
-    transform_sweep.py QUAD_MESHER DATA_DIR OUT_DIR {airfoils,arms} [--jobs N]
+    transform_sweep.py QUAD_MESHER DATA_DIR OUT_DIR {airfoils,arms,blobs} [--jobs N]
 
 Meshes each input with `QUAD_MESHER IN.poly -o OUT.msh --report OUT.json` and counts the quads
 the report gives as having an angle outside [45, 135] that no input corner forces
@@ -13,15 +13,21 @@ only, so the guarantee is judged over many positions:
     3.1 and 7.3 (96 runs: air foils at angles of attack);
   * arms: an L, a cross and a rectangle with arms 0.03 to 0.21 wide turned 0.37 to 45.37
     degrees, and an L and a cross 0.126 to 0.15 wide turned 20.37 to 45.87 degrees (504 runs:
-    narrow regions across the quadtree's axes).
-Prints each run with quads out (or a failed exit) and a summary line: runs, runs with quads
-out, failed runs, quads in all. The transformed inputs are written to OUT_DIR. Needs nothing
-beyond Python 3.
+    narrow regions across the quadtree's axes);
+  * blobs: 80 random smooth domains (seeds 0 to 79): a blob r = 1 + sum of 1 to 5 cosine
+    terms, sampled at 200, 400 or 800 points, with 0 to 3 smaller blob holes, turned,
+    scaled by 0.013 to 250 and moved up to 10 (smooth curves of every kind, paper §4). For
+    these the templates stage is run too (`--stop-after templates`), and its buffer-side
+    angles outside [112.5, 225] (Lemma 2, `buffer.buffer_angles_out`) are counted.
+Prints each run with quads out (or a failed exit, or Lemma 2 misses) and a summary line: runs,
+runs with quads out, failed runs, quads in all (and Lemma 2 misses in all). The inputs are
+written to OUT_DIR. Needs nothing beyond Python 3.
 """
 import argparse
 import json
 import math
 import os
+import random
 import subprocess
 import sys
 from concurrent.futures import ThreadPoolExecutor
@@ -109,13 +115,71 @@ def arm_inputs(out_dir):
     return inputs
 
 
-def mesh(mesher, path):
+def blob_inputs(out_dir):
+    def blob(cx, cy, r, terms, rng, n):
+        amplitudes = [(rng.uniform(-0.12, 0.12) / (j ** 0.7), rng.uniform(0, 2 * math.pi))
+                      for j in range(2, terms + 2)]
+        return [(cx + r * (1 + sum(a * math.cos(j * t + p) for j, (a, p) in zip(range(2, terms + 2), amplitudes)))
+                 * math.cos(t),
+                 cy + r * (1 + sum(a * math.cos(j * t + p) for j, (a, p) in zip(range(2, terms + 2), amplitudes)))
+                 * math.sin(t))
+                for t in (2 * math.pi * i / n for i in range(n))]
+
+    inputs = []
+    for seed in range(80):
+        rng = random.Random(seed)
+        scale = rng.choice([1, 3.7, 0.013, 250, 17])
+        loops = [blob(0, 0, 1, rng.randint(2, 6), rng, rng.choice([200, 400, 800]))]
+        holes = []
+        for _ in range(rng.randint(0, 3)):
+            for _ in range(50):
+                cx, cy, r = rng.uniform(-0.5, 0.5), rng.uniform(-0.5, 0.5), rng.uniform(0.05, 0.25)
+                if all(math.hypot(cx - x, cy - y) > r + q + 0.08 for x, y, q in holes) and math.hypot(cx, cy) + r < 0.6:
+                    holes.append((cx, cy, r))
+                    break
+        for cx, cy, r in holes:
+            loops.append(blob(cx, cy, r, rng.randint(2, 4), rng, rng.choice([100, 200]))[::-1])
+        turn = rng.uniform(0, 2 * math.pi)
+        c, s = math.cos(turn), math.sin(turn)
+        ox, oy = rng.uniform(-10, 10), rng.uniform(-10, 10)
+
+        def move(x, y):
+            return ox + scale * (c * x - s * y), oy + scale * (s * x + c * y)
+
+        path = os.path.join(out_dir, 'blob_%d.poly' % seed)
+        with open(path, 'w') as out:
+            out.write('%d 2 0 0\n' % sum(len(loop) for loop in loops))
+            k = 0
+            for loop in loops:
+                for x, y in loop:
+                    out.write('%d %r %r\n' % ((k,) + move(x, y)))
+                    k += 1
+            out.write('%d 0\n' % k)
+            k = 0
+            for loop in loops:
+                for i in range(len(loop)):
+                    out.write('%d %d %d\n' % (k + i, k + i, k + (i + 1) % len(loop)))
+                k += len(loop)
+            out.write('%d\n' % len(holes))
+            for i, (x, y, _) in enumerate(holes):
+                out.write('%d %r %r\n' % ((i,) + move(x, y)))
+        inputs.append(path)
+    return inputs
+
+
+def mesh(mesher, path, templates_too=False):
     stem = path[:-len('.poly')]
     run = subprocess.run([mesher, path, '-o', stem + '.msh', '--report', stem + '.json'],
                          capture_output=True, text=True)
     if run.returncode != 0:
         return path, None, run.stderr.strip().splitlines()[-1:]
     report = json.load(open(stem + '.json'))
+    if templates_too:
+        run = subprocess.run([mesher, path, '--stop-after', 'templates', '-o', stem + '.core.msh',
+                              '--report', stem + '.core.json'], capture_output=True, text=True)
+        if run.returncode != 0:
+            return path, None, run.stderr.strip().splitlines()[-1:]
+        report['lemma_2_misses'] = json.load(open(stem + '.core.json'))['buffer']['buffer_angles_out']
     return path, report, []
 
 
@@ -124,14 +188,15 @@ def main():
     parser.add_argument('mesher')
     parser.add_argument('data_dir')
     parser.add_argument('out_dir')
-    parser.add_argument('set', choices=['airfoils', 'arms'])
+    parser.add_argument('set', choices=['airfoils', 'arms', 'blobs'])
     parser.add_argument('--jobs', type=int, default=1)
     args = parser.parse_args()
     os.makedirs(args.out_dir, exist_ok=True)
-    inputs = airfoil_inputs(args.data_dir, args.out_dir) if args.set == 'airfoils' else arm_inputs(args.out_dir)
-    with_out = failed = quads = 0
+    inputs = {'airfoils': lambda: airfoil_inputs(args.data_dir, args.out_dir), 'arms': lambda: arm_inputs(args.out_dir),
+              'blobs': lambda: blob_inputs(args.out_dir)}[args.set]()
+    with_out = failed = quads = misses = 0
     with ThreadPoolExecutor(args.jobs) as pool:
-        for path, report, error in pool.map(lambda p: mesh(args.mesher, p), inputs):
+        for path, report, error in pool.map(lambda p: mesh(args.mesher, p, args.set == 'blobs'), inputs):
             name = os.path.basename(path)
             if report is None:
                 failed += 1
@@ -143,8 +208,13 @@ def main():
                 with_out += 1
                 print('%s: %d quads out, angles [%.2f, %.2f], rounds end: %s'
                       % (name, out, report['min_angle'], report['max_angle'], report['buffer'].get('rounds_end')))
+            if report.get('lemma_2_misses', 0) > 0:
+                misses += report['lemma_2_misses']
+                print('%s: %d buffer-side angles outside [112.5, 225] after the templates'
+                      % (name, report['lemma_2_misses']))
             sys.stdout.flush()
-    print('%d runs, %d with quads out, %d failed, %d quads' % (len(inputs), with_out, failed, quads))
+    print('%d runs, %d with quads out, %d failed, %d quads' % (len(inputs), with_out, failed, quads)
+          + (', %d Lemma 2 misses' % misses if args.set == 'blobs' else ''))
     return 1 if failed else 0
 
 

@@ -1309,6 +1309,56 @@ TEST(Buffer_layers, templates_meet_lemma_2_on_uniform_cores)
   check_lemma_2(polygons({ wavy_blob() }), "wavy blob");
 }
 
+// A blob with three blob holes (a review's random smooth domain, seed 69): each loop
+// r (1 + sum a_j cos(j t + p_j)), j from 2, then turned by 4.0513 and moved by (-0.6006, -4.4499).
+Domain blob_with_three_blob_holes()
+{
+  struct Loop { double cx, cy, r; int n; std::vector<std::pair<double, double>> terms; };
+  const std::vector<Loop> loops{
+    { 0, 0, 1, 200, { { -0.0640181775329673, 2.165295446362468 }, { 0.046703428617646155, 5.485661392111422 } } },
+    { -0.035183088266535045, -0.07165376419540115, 0.1375297141531306, 100,
+      { { -0.06001578905404075, 0.19145488122405674 }, { -0.02789588315798949, 1.5352525797421896 } } },
+    { 0.428343197146536, 0.0033443928993820426, 0.09152921453604596, 200,
+      { { 0.018701456125854374, 0.5060484416425745 }, { -0.01908623592560812, 1.6558666249350413 } } },
+    { -0.2378488937545844, 0.29899329485819026, 0.17143767680537694, 200,
+      { { -0.06892476826743786, 0.5355256105827214 }, { -0.0419115843374892, 2.490932798920455 },
+        { 0.013661717936729349, 5.832242530687267 }, { -0.026904280130381087, 3.069117006265625 } } } };
+  const double turn = 4.05128537557802, ox = -0.6006334436548713, oy = -4.449911485149787;
+  auto place = [&](double x, double y) {
+    return Point(ox + std::cos(turn) * x - std::sin(turn) * y, oy + std::sin(turn) * x + std::cos(turn) * y);
+  };
+  std::vector<std::vector<Point>> polys;
+  std::vector<Point> holes;
+  for(const Loop& l : loops) {
+    std::vector<Point> p;
+    for(int i = 0; i < l.n; ++i) {
+      const double t = 2 * pi * i / l.n;
+      double r = 1;
+      for(std::size_t j = 0; j < l.terms.size(); ++j) r += l.terms[j].first * std::cos(double(j + 2) * t + l.terms[j].second);
+      p.push_back(place(l.cx + l.r * r * std::cos(t), l.cy + l.r * r * std::sin(t)));
+    }
+    polys.push_back(p);
+    if(l.r < 1) holes.push_back(place(l.cx, l.cy));
+  }
+  return polygons(polys, holes);
+}
+
+// A notch barely out at a transition template's corner: blob_with_three_blob_holes()'s
+// (-1.3577, -5.0226) had 111.65 degrees, its core angles 45, 45 (the template's), 68 and 90,
+// its neighbours at 161 degrees and at 225 (a cut corner with 135 in its kite): no move of it
+// or its window helps, and a quad over it searched within 30 degrees of the bisector pushed a
+// neighbour out. The quad's fourth corner lies on a thin band 45 degrees off the bisector (135
+// degrees at it, little at the 161-degree neighbour), found by searching the quad's and the
+// betas' excess together.
+TEST(Buffer_layers, a_notch_barely_out_is_filled_off_its_bisector)
+{
+  const Domain d = blob_with_three_blob_holes();
+  Mesher mesher(d);
+  mesher.run(Stage::TEMPLATES);
+  EXPECT_GE(mesher.buffer_report().filled_notches, 1u);
+  check_lemma_2(d, "blob, three holes");
+}
+
 // Adaptive cores (../shared/data, skipped when absent): the bisector steps and the lattice's
 // left 18 of Lake Superior's 2310 buffer-side angles out and 16 of the guitar's 1110 (quads
 // that are not squares, transition templates' 45-degree corners); the plane searches, the core

@@ -1128,6 +1128,35 @@ private:
           const double t = k * pi / 12, cs = std::cos(t), sn = std::sin(t);
           consider(Point_2d{ m_xy[b].x + f * s * (cs * d.x - sn * d.y), m_xy[b].y + f * s * (sn * d.x + cs * d.y) });
         }
+    // A notch barely out (111.65 degrees at a transition template's corner, core angles 45,
+    // 45, 68, 90, blob_37's (-0.1252, 9.0710)) has its Y on a thin band, far off the bisector:
+    // the quad's angle at Y exactly 135 (a lone quad's corner has beta 225 at least), and at a
+    // neighbour little enough to keep its beta in range. The ring misses the band; a search of
+    // the quad's excess over [45, 135] plus the betas' reaches it, then consider() checks.
+    // Not beside an input corner, whose buffer is §5's (naca0012's trailing edge: such a quad
+    // made the round invalid).
+    if(!found && !near_input_corner(b)) {
+      auto penalty = [&](const Point_2d& y) {
+        return (std::max)(0.0, quad_badness({ m_xy[b], m_xy[a], y, m_xy[c1] }) - 45.0) + excess(y);
+      };
+      Point_2d start = m_xy[b];
+      double least = std::numeric_limits<double>::infinity();
+      for(double f : { 0.7, 0.85, 1.0, 1.15, 1.3 })
+        for(int k = -5; k <= 5; ++k) {
+          const double t = k * pi / 12, cs = std::cos(t), sn = std::sin(t);
+          const Point_2d y{ m_xy[b].x + f * s * (cs * d.x - sn * d.y), m_xy[b].y + f * s * (sn * d.x + cs * d.y) };
+          const double p = penalty(y);
+          if(p < least) { least = p; start = y; }
+        }
+      pattern_search(start, s, [&](const Point_2d& y) {
+        const double p = penalty(y);
+        if(!(p < least)) return false;
+        least = p;
+        start = y;
+        return true;
+      });
+      consider(start);
+    }
     if(!found) return;
     pattern_search(best_y, s, consider);
     // Y is a core point like the others (the first buffer points come after the core's)
