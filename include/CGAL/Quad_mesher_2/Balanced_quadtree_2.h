@@ -118,6 +118,9 @@ public:
     const std::uint32_t* v = m_nodes.find(k.code());
     return v != nullptr && *v == SPLIT;
   }
+  /// starts loading the node map's slot of `k`, so that a lookup of it a little later does
+  /// not wait for memory (a hint only: the map of a large tree is far larger than the cache)
+  void prefetch(const Cell_key& k) const { m_nodes.prefetch(k.code()); }
   std::size_t number_of_leaves() const { return m_number_of_leaves; }
   std::size_t number_of_nodes() const { return m_nodes.size(); }
   /// the deepest level of any leaf

@@ -131,17 +131,27 @@ templated_mesh(const Tree& tree, std::vector<Cell_key>* quad_cells = nullptr,
   // lookups (those at their parent's centre) are known without looking (most leaves are so).
   // 2 MB pages: an entry per leaf, millions.
   std::vector<const Quad_template*, Huge_page_allocator<const Quad_template*>> templates(leaves.size());
+  // The choice looks up the leaf's neighbours of its level in the node map, far larger than
+  // the cache: those of the leaf `ahead` places on are prefetched meanwhile.
+  constexpr std::size_t ahead = 8;
+  auto prefetch_neighbours = [&tree](const Cell_key& k) {
+    for(std::int64_t dj = -1; dj <= 1; ++dj)
+      for(std::int64_t di = -1; di <= 1; ++di)
+        if((di != 0 || dj != 0) && tree.in_grid(k.level, std::int64_t(k.i) + di, std::int64_t(k.j) + dj))
+          tree.prefetch(Cell_key(k.level, std::uint64_t(std::int64_t(k.i) + di), std::uint64_t(std::int64_t(k.j) + dj)));
+  };
   for(std::size_t n = 0; n < leaves.size();) {
     const Cell_key& k = leaves[n];
     const bool family = k.level > 0 && (k.i & 1) == 0 && (k.j & 1) == 0 && n + 3 < leaves.size()
                         && leaves[n + 1] == k.parent().child(1, 0) && leaves[n + 2] == k.parent().child(0, 1)
                         && leaves[n + 3] == k.parent().child(1, 1);
-    for(const std::size_t end = family ? n + 4 : n + 1; n < end; ++n)
+    for(const std::size_t end = family ? n + 4 : n + 1; n < end; ++n) {
+      if(n + ahead < leaves.size()) prefetch_neighbours(leaves[n + ahead]);
       templates[n] = &template_of(choose_template(tree, leaves[n], family));
+    }
   }
   // The quads look up a vertex map far larger than the cache, one miss per lookup: those of
-  // the leaf `ahead` places on are prefetched meanwhile.
-  constexpr std::size_t ahead = 8;
+  // the leaf `ahead` places on are prefetched likewise.
   // local half-cell units of leaf k -> its vertex lattice key
   auto vertex_key = [vertex_level](const Cell_key& k, const Local_vertex& v) {
     const int shift = vertex_level - k.level - 1;
