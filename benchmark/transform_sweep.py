@@ -2,7 +2,7 @@
 """transform_sweep.py -- the angle guarantee under rotations and scalings, case by case.
 
 Usage:
-    transform_sweep.py QUAD_MESHER DATA_DIR OUT_DIR {airfoils,arms,blobs} [--jobs N]
+    transform_sweep.py QUAD_MESHER DATA_DIR OUT_DIR {airfoils,arms,blobs} [--jobs N] [--blobs N]
 
 Meshes each input with `QUAD_MESHER IN.poly -o OUT.msh --report OUT.json` and counts the quads
 the report gives as having an angle outside [45, 135] that no input corner forces
@@ -14,11 +14,12 @@ only, so the guarantee is judged over many positions:
   * arms: an L, a cross and a rectangle with arms 0.03 to 0.21 wide turned 0.37 to 45.37
     degrees, and an L and a cross 0.126 to 0.15 wide turned 20.37 to 45.87 degrees (504 runs:
     narrow regions across the quadtree's axes);
-  * blobs: 80 random smooth domains (seeds 0 to 79): a blob r = 1 + sum of 1 to 5 cosine
-    terms, sampled at 200, 400 or 800 points, with 0 to 3 smaller blob holes, turned,
-    scaled by 0.013 to 250 and moved up to 10 (smooth curves of every kind, paper §4). For
-    these the templates stage is run too (`--stop-after templates`), and its buffer-side
-    angles outside [112.5, 225] (Lemma 2, `buffer.buffer_angles_out`) are counted.
+  * blobs: 80 random smooth domains (seeds 0 to 79; --blobs N for seeds 0 to N-1): a blob
+    r = 1 + a sum of 2 to 6 cosine terms of orders 2 up, sampled at 200, 400 or 800 points,
+    with 0 to 3 smaller blob holes, turned, scaled by 0.013 to 250 and moved up to 10
+    (smooth curves of every kind, paper §4). For these the templates stage is run too (`--stop-after
+    templates`), and its buffer-side angles outside [112.5, 225] (Lemma 2,
+    `buffer.buffer_angles_out`) are counted.
 Prints each run with quads out (or a failed exit, or Lemma 2 misses) and a summary line: runs,
 runs with quads out, failed runs, quads in all (and Lemma 2 misses in all). The inputs are
 written to OUT_DIR. Needs nothing beyond Python 3.
@@ -115,18 +116,19 @@ def arm_inputs(out_dir):
     return inputs
 
 
-def blob_inputs(out_dir):
+def blob_inputs(out_dir, count):
     def blob(cx, cy, r, terms, rng, n):
         amplitudes = [(rng.uniform(-0.12, 0.12) / (j ** 0.7), rng.uniform(0, 2 * math.pi))
                       for j in range(2, terms + 2)]
-        return [(cx + r * (1 + sum(a * math.cos(j * t + p) for j, (a, p) in zip(range(2, terms + 2), amplitudes)))
-                 * math.cos(t),
-                 cy + r * (1 + sum(a * math.cos(j * t + p) for j, (a, p) in zip(range(2, terms + 2), amplitudes)))
-                 * math.sin(t))
-                for t in (2 * math.pi * i / n for i in range(n))]
+        points = []
+        for i in range(n):
+            t = 2 * math.pi * i / n
+            radius = r * (1 + sum(a * math.cos(j * t + p) for j, (a, p) in enumerate(amplitudes, 2)))
+            points.append((cx + radius * math.cos(t), cy + radius * math.sin(t)))
+        return points
 
     inputs = []
-    for seed in range(80):
+    for seed in range(count):
         rng = random.Random(seed)
         scale = rng.choice([1, 3.7, 0.013, 250, 17])
         loops = [blob(0, 0, 1, rng.randint(2, 6), rng, rng.choice([200, 400, 800]))]
@@ -134,7 +136,8 @@ def blob_inputs(out_dir):
         for _ in range(rng.randint(0, 3)):
             for _ in range(50):
                 cx, cy, r = rng.uniform(-0.5, 0.5), rng.uniform(-0.5, 0.5), rng.uniform(0.05, 0.25)
-                if all(math.hypot(cx - x, cy - y) > r + q + 0.08 for x, y, q in holes) and math.hypot(cx, cy) + r < 0.6:
+                apart = all(math.hypot(cx - x, cy - y) > r + q + 0.08 for x, y, q in holes)
+                if apart and math.hypot(cx, cy) + r < 0.6:
                     holes.append((cx, cy, r))
                     break
         for cx, cy, r in holes:
@@ -190,10 +193,11 @@ def main():
     parser.add_argument('out_dir')
     parser.add_argument('set', choices=['airfoils', 'arms', 'blobs'])
     parser.add_argument('--jobs', type=int, default=1)
+    parser.add_argument('--blobs', type=int, default=80, help='how many blobs (seeds 0 to N-1)')
     args = parser.parse_args()
     os.makedirs(args.out_dir, exist_ok=True)
     inputs = {'airfoils': lambda: airfoil_inputs(args.data_dir, args.out_dir), 'arms': lambda: arm_inputs(args.out_dir),
-              'blobs': lambda: blob_inputs(args.out_dir)}[args.set]()
+              'blobs': lambda: blob_inputs(args.out_dir, args.blobs)}[args.set]()
     with_out = failed = quads = misses = 0
     with ThreadPoolExecutor(args.jobs) as pool:
         for path, report, error in pool.map(lambda p: mesh(args.mesher, p, args.set == 'blobs'), inputs):
