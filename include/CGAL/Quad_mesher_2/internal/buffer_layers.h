@@ -1122,12 +1122,15 @@ private:
       consider(Point_2d{ m_xy[b].x + f * s * d.x, m_xy[b].y + f * s * d.y });
     // Beside an adaptive core the quad's other corners are not a lattice notch's: Y then
     // needs to lie off the bisector (a pattern search as for a vertex, search_boundary_vertex())
+    // f s from b, turned by k 15 degrees from the bisector
+    auto off_bisector = [&](double f, int k) {
+      const double t = k * pi / 12, cs = std::cos(t), sn = std::sin(t);
+      return Point_2d{ m_xy[b].x + f * s * (cs * d.x - sn * d.y), m_xy[b].y + f * s * (sn * d.x + cs * d.y) };
+    };
     if(!found)
       for(double f : { 0.7, 0.85, 1.0, 1.15, 1.3 })
-        for(int k = -2; k <= 2; ++k) {
-          const double t = k * pi / 12, cs = std::cos(t), sn = std::sin(t);
-          consider(Point_2d{ m_xy[b].x + f * s * (cs * d.x - sn * d.y), m_xy[b].y + f * s * (sn * d.x + cs * d.y) });
-        }
+        for(int k = -2; k <= 2; ++k)
+          consider(off_bisector(f, k));
     // A notch barely out (111.65 degrees at a transition template's corner, core angles 45,
     // 45, 68, 90, blob_37's (-0.1252, 9.0710)) has its Y on a thin band, far off the bisector:
     // the quad's angle at Y exactly 135 (a lone quad's corner has beta 225 at least), and at a
@@ -1143,8 +1146,7 @@ private:
       double least = std::numeric_limits<double>::infinity();
       for(double f : { 0.7, 0.85, 1.0, 1.15, 1.3 })
         for(int k = -5; k <= 5; ++k) {
-          const double t = k * pi / 12, cs = std::cos(t), sn = std::sin(t);
-          const Point_2d y{ m_xy[b].x + f * s * (cs * d.x - sn * d.y), m_xy[b].y + f * s * (sn * d.x + cs * d.y) };
+          const Point_2d y = off_bisector(f, k);
           const double p = penalty(y);
           if(p < least) { least = p; start = y; }
         }
