@@ -2,7 +2,7 @@
 """transform_sweep.py -- the angle guarantee under rotations and scalings, case by case.
 
 Usage:
-    transform_sweep.py QUAD_MESHER DATA_DIR OUT_DIR {airfoils,arms,blobs} [--jobs N] [--blobs N]
+    transform_sweep.py QUAD_MESHER DATA_DIR OUT_DIR {airfoils,arms,blobs,stars} [--jobs N] [--blobs N]
 
 Meshes each input with `QUAD_MESHER IN.poly -o OUT.msh --report OUT.json` and counts the quads
 the report gives as having an angle outside [45, 135] that no input corner forces
@@ -19,7 +19,10 @@ only, so the guarantee is judged over many positions:
     with 0 to 3 smaller blob holes, turned, scaled by 0.013 to 250 and moved up to 10
     (smooth curves of every kind, paper §4). For these the templates stage is run too (`--stop-after
     templates`), and its buffer-side angles outside [112.5, 225] (Lemma 2,
-    `buffer.buffer_angles_out`) are counted.
+    `buffer.buffer_angles_out`) are counted;
+  * stars: 200 random star polygons (seeds 0 to 199): 6 to 40 corners at jittered angles and
+    radii, with 0 to 2 star holes, turned and scaled by 0.01 to 130 (sharp and reflex corners
+    of every size, paper §5).
 Prints each run with quads out (or a failed exit, or Lemma 2 misses) and a summary line: runs,
 runs with quads out, failed runs, quads in all (and Lemma 2 misses in all). The inputs are
 written to OUT_DIR. Needs nothing beyond Python 3.
@@ -116,6 +119,32 @@ def arm_inputs(out_dir):
     return inputs
 
 
+def write_loops(path, loops, holes, scale, turn, ox, oy):
+    """Writes `loops` (and a hole point at each (x, y, r) of `holes`) scaled, turned and moved."""
+    c, s = math.cos(turn), math.sin(turn)
+
+    def move(x, y):
+        return ox + scale * (c * x - s * y), oy + scale * (s * x + c * y)
+
+    with open(path, 'w') as out:
+        out.write('%d 2 0 0\n' % sum(len(loop) for loop in loops))
+        k = 0
+        for loop in loops:
+            for x, y in loop:
+                out.write('%d %r %r\n' % ((k,) + move(x, y)))
+                k += 1
+        out.write('%d 0\n' % k)
+        k = 0
+        for loop in loops:
+            for i in range(len(loop)):
+                out.write('%d %d %d\n' % (k + i, k + i, k + (i + 1) % len(loop)))
+            k += len(loop)
+        out.write('%d\n' % len(holes))
+        for i, (x, y, _) in enumerate(holes):
+            out.write('%d %r %r\n' % ((i,) + move(x, y)))
+    return path
+
+
 def blob_inputs(out_dir, count):
     def blob(cx, cy, r, terms, rng, n):
         amplitudes = [(rng.uniform(-0.12, 0.12) / (j ** 0.7), rng.uniform(0, 2 * math.pi))
@@ -143,30 +172,37 @@ def blob_inputs(out_dir, count):
         for cx, cy, r in holes:
             loops.append(blob(cx, cy, r, rng.randint(2, 4), rng, rng.choice([100, 200]))[::-1])
         turn = rng.uniform(0, 2 * math.pi)
-        c, s = math.cos(turn), math.sin(turn)
         ox, oy = rng.uniform(-10, 10), rng.uniform(-10, 10)
+        inputs.append(write_loops(os.path.join(out_dir, 'blob_%d.poly' % seed), loops, holes, scale, turn, ox, oy))
+    return inputs
 
-        def move(x, y):
-            return ox + scale * (c * x - s * y), oy + scale * (s * x + c * y)
 
-        path = os.path.join(out_dir, 'blob_%d.poly' % seed)
-        with open(path, 'w') as out:
-            out.write('%d 2 0 0\n' % sum(len(loop) for loop in loops))
-            k = 0
-            for loop in loops:
-                for x, y in loop:
-                    out.write('%d %r %r\n' % ((k,) + move(x, y)))
-                    k += 1
-            out.write('%d 0\n' % k)
-            k = 0
-            for loop in loops:
-                for i in range(len(loop)):
-                    out.write('%d %d %d\n' % (k + i, k + i, k + (i + 1) % len(loop)))
-                k += len(loop)
-            out.write('%d\n' % len(holes))
-            for i, (x, y, _) in enumerate(holes):
-                out.write('%d %r %r\n' % ((i,) + move(x, y)))
-        inputs.append(path)
+def star_inputs(out_dir):
+    def star(cx, cy, r, corners, rng, jitter):
+        points = []
+        for i in range(corners):
+            t = 2 * math.pi * (i + rng.uniform(-0.3, 0.3)) / corners
+            radius = r * rng.uniform(1 - jitter, 1)
+            points.append((cx + radius * math.cos(t), cy + radius * math.sin(t)))
+        return points
+
+    inputs = []
+    for seed in range(200):
+        rng = random.Random(seed)
+        jitter = rng.uniform(0.1, 0.6)
+        loops = [star(0, 0, 1, rng.randint(6, 40), rng, jitter)]
+        holes = []
+        for _ in range(rng.randint(0, 2)):
+            for _ in range(50):
+                cx, cy, r = rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3), rng.uniform(0.05, 0.15)
+                apart = all(math.hypot(cx - x, cy - y) > r + q + 0.05 for x, y, q in holes)
+                if apart and math.hypot(cx, cy) + r < 0.9 * (1 - jitter):
+                    holes.append((cx, cy, r))
+                    break
+        for cx, cy, r in holes:
+            loops.append(star(cx, cy, r, rng.randint(5, 12), rng, 0.3)[::-1])
+        inputs.append(write_loops(os.path.join(out_dir, 'star_%d.poly' % seed), loops, holes,
+                                  rng.choice([1, 7.3, 0.01, 130]), rng.uniform(0, 2 * math.pi), 0, 0))
     return inputs
 
 
@@ -191,13 +227,13 @@ def main():
     parser.add_argument('mesher')
     parser.add_argument('data_dir')
     parser.add_argument('out_dir')
-    parser.add_argument('set', choices=['airfoils', 'arms', 'blobs'])
+    parser.add_argument('set', choices=['airfoils', 'arms', 'blobs', 'stars'])
     parser.add_argument('--jobs', type=int, default=1)
     parser.add_argument('--blobs', type=int, default=80, help='how many blobs (seeds 0 to N-1)')
     args = parser.parse_args()
     os.makedirs(args.out_dir, exist_ok=True)
     inputs = {'airfoils': lambda: airfoil_inputs(args.data_dir, args.out_dir), 'arms': lambda: arm_inputs(args.out_dir),
-              'blobs': lambda: blob_inputs(args.out_dir, args.blobs)}[args.set]()
+              'blobs': lambda: blob_inputs(args.out_dir, args.blobs), 'stars': lambda: star_inputs(args.out_dir)}[args.set]()
     with_out = failed = quads = misses = 0
     with ThreadPoolExecutor(args.jobs) as pool:
         for path, report, error in pool.map(lambda p: mesh(args.mesher, p, args.set == 'blobs'), inputs):
