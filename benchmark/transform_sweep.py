@@ -63,16 +63,30 @@ def write_transformed(path, poly, move):
             out.write('%s %.17g %.17g\n' % ((i,) + move(x, y)))
 
 
-def write_loop(path, points):
-    n = len(points)
+def write_loops(path, loops, holes, scale, turn, ox, oy):
+    """Writes `loops` (and a hole point at each (x, y, r) of `holes`) scaled, turned and moved."""
+    c, s = math.cos(turn), math.sin(turn)
+
+    def move(x, y):
+        return ox + scale * (c * x - s * y), oy + scale * (s * x + c * y)
+
     with open(path, 'w') as out:
-        out.write('%d 2 0 0\n' % n)
-        for k, (x, y) in enumerate(points):
-            out.write('%d %.17g %.17g\n' % (k + 1, x, y))
-        out.write('%d 0\n' % n)
-        for k in range(n):
-            out.write('%d %d %d\n' % (k + 1, k + 1, (k + 1) % n + 1))
-        out.write('0\n')
+        out.write('%d 2 0 0\n' % sum(len(loop) for loop in loops))
+        k = 0
+        for loop in loops:
+            for x, y in loop:
+                out.write('%d %r %r\n' % ((k,) + move(x, y)))
+                k += 1
+        out.write('%d 0\n' % k)
+        k = 0
+        for loop in loops:
+            for i in range(len(loop)):
+                out.write('%d %d %d\n' % (k + i, k + i, k + (i + 1) % len(loop)))
+            k += len(loop)
+        out.write('%d\n' % len(holes))
+        for i, (x, y, _) in enumerate(holes):
+            out.write('%d %r %r\n' % ((i,) + move(x, y)))
+    return path
 
 
 def airfoil_inputs(data_dir, out_dir):
@@ -112,37 +126,9 @@ def arm_inputs(out_dir):
              for w in (0.126, 0.13, 0.135, 0.14, 0.145, 0.15) for k in range(18)]
     inputs = []
     for name, w, degrees in runs:
-        c, s = math.cos(math.radians(degrees)), math.sin(math.radians(degrees))
         path = os.path.join(out_dir, '%s_%g_turned%g.poly' % (name, w, degrees))
-        write_loop(path, [(c * x - s * y, s * x + c * y) for x, y in shapes[name](w)])
-        inputs.append(path)
+        inputs.append(write_loops(path, [shapes[name](w)], [], 1, math.radians(degrees), 0, 0))
     return inputs
-
-
-def write_loops(path, loops, holes, scale, turn, ox, oy):
-    """Writes `loops` (and a hole point at each (x, y, r) of `holes`) scaled, turned and moved."""
-    c, s = math.cos(turn), math.sin(turn)
-
-    def move(x, y):
-        return ox + scale * (c * x - s * y), oy + scale * (s * x + c * y)
-
-    with open(path, 'w') as out:
-        out.write('%d 2 0 0\n' % sum(len(loop) for loop in loops))
-        k = 0
-        for loop in loops:
-            for x, y in loop:
-                out.write('%d %r %r\n' % ((k,) + move(x, y)))
-                k += 1
-        out.write('%d 0\n' % k)
-        k = 0
-        for loop in loops:
-            for i in range(len(loop)):
-                out.write('%d %d %d\n' % (k + i, k + i, k + (i + 1) % len(loop)))
-            k += len(loop)
-        out.write('%d\n' % len(holes))
-        for i, (x, y, _) in enumerate(holes):
-            out.write('%d %r %r\n' % ((i,) + move(x, y)))
-    return path
 
 
 def blob_inputs(out_dir, count):

@@ -598,7 +598,7 @@ public:
         const double dev = std::atan2(cross_2d(bis, d), dot_2d(bis, d));
         if(limit > 0 && std::abs(dev) > limit) {
           const double t = dev > 0 ? limit : -limit;
-          d = Point_2d{ bis.x * std::cos(t) - bis.y * std::sin(t), bis.x * std::sin(t) + bis.y * std::cos(t) };
+          d = turned_2d(bis, t);
         }
         const double c_dn = (std::max)(dot_2d(d, toward), 0.5);
         const double lambda = 0.5 * h.dist / c_dn;
@@ -1124,8 +1124,8 @@ private:
     // needs to lie off the bisector (a pattern search as for a vertex, search_boundary_vertex())
     // f s from b, turned by k 15 degrees from the bisector
     auto off_bisector = [&](double f, int k) {
-      const double t = k * pi / 12, cs = std::cos(t), sn = std::sin(t);
-      return Point_2d{ m_xy[b].x + f * s * (cs * d.x - sn * d.y), m_xy[b].y + f * s * (sn * d.x + cs * d.y) };
+      const Point_2d u = turned_2d(d, k * pi / 12);
+      return Point_2d{ m_xy[b].x + f * s * u.x, m_xy[b].y + f * s * u.y };
     };
     if(!found)
       for(double f : { 0.7, 0.85, 1.0, 1.15, 1.3 })
@@ -1261,8 +1261,7 @@ private:
         const double turn = (here - other) / 2 * pi / 180;
         const Point_2d d = minus_2d(old, P), e = minus_2d(w, P);
         const double sense = cross_2d(d, e) > 0 ? 1.0 : -1.0;
-        const double cs = std::cos(sense * turn), sn = std::sin(sense * turn);
-        targets.push_back(Point_2d{ P.x + cs * d.x - sn * d.y, P.y + sn * d.x + cs * d.y });
+        targets.push_back(turned_about_2d(old, P, sense * turn));
       }
     }
   }
@@ -2588,11 +2587,10 @@ private:
       F[m] = best_f;
     };
     auto turn = [&](std::size_t i) {
-      const Point_2d from = F[i], u = minus_2d(from, corner);
+      const Point_2d from = F[i];
       Point_2d best_f = from;
       for(double degrees : { -30.0, -20.0, -12.0, -6.0, -3.0, 3.0, 6.0, 12.0, 20.0, 30.0 }) {
-        const double t = degrees * pi / 180, cs = std::cos(t), sn = std::sin(t);
-        F[i] = Point_2d{ corner.x + cs * u.x - sn * u.y, corner.y + sn * u.x + cs * u.y };
+        F[i] = turned_about_2d(from, corner, degrees * pi / 180);
         const double w = worst();
         if(w < best) { best = w; best_f = F[i]; }
       }

@@ -37,6 +37,19 @@ inline double cross_2d(const Point_2d& a, const Point_2d& b) { return a.x * b.y 
 inline double dot_2d(const Point_2d& a, const Point_2d& b) { return a.x * b.x + a.y * b.y; }
 inline Point_2d minus_2d(const Point_2d& a, const Point_2d& b) { return Point_2d{a.x - b.x, a.y - b.y}; }
 inline double length_2d(const Point_2d& a) { return std::sqrt(a.x * a.x + a.y * a.y); }
+/// the vector `v` turned counter-clockwise by `radians`
+inline Point_2d turned_2d(const Point_2d& v, double radians)
+{
+  const double cs = std::cos(radians), sn = std::sin(radians);
+  return Point_2d{ cs * v.x - sn * v.y, sn * v.x + cs * v.y };
+}
+/// the point `p` turned counter-clockwise about `centre` by `radians`
+inline Point_2d turned_about_2d(const Point_2d& p, const Point_2d& centre, double radians)
+{
+  const double cs = std::cos(radians), sn = std::sin(radians);
+  const Point_2d v = minus_2d(p, centre);
+  return Point_2d{ centre.x + cs * v.x - sn * v.y, centre.y + sn * v.x + cs * v.y };
+}
 
 /// The angle in degrees, in [0, 360), swept counter-clockwise from a vector u to a vector v
 /// with cross(u, v) = `cross` and dot(u, v) = `dot`.
