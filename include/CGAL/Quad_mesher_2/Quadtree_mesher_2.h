@@ -264,6 +264,7 @@ public:
     for(std::size_t& v : m_point_vertices)
       v = v < index.size() ? index[v] : v; // a lost point (see lost_points()) stays lost
     m_buffer_report = layers.report();
+    m_buffer_requests = layers.requests();
     record("buffer", start);
     return ok && m_buffer_report.invalid_quads == 0 && m_buffer_report.bad_angle_quads == 0;
   }
@@ -341,7 +342,7 @@ public:
                          && quality.is_valid() && quality.number_of_near_duplicate_vertices == 0;
       // refined for validity first; for angles only once a round is valid
       std::vector<std::pair<internal::Point_2d, double>> requests =
-        valid ? m_buffer_report.angle_requests : m_buffer_report.refine_requests;
+        valid ? m_buffer_requests.for_angles : m_buffer_requests.for_validity;
       // Buffer nodes of two loops met across a narrow gap (a node on another's edge, or
       // nearly on another node): the buffer's own checks do not see them, and without a
       // request there the rounds ended, keeping an earlier round's angles out (the 30P30N
@@ -416,7 +417,7 @@ public:
   /// minutes each on a hard input, and `round_figures()` is read only after `run()` returns
   void set_round_observer(Round_observer observer) { m_round_observer = std::move(observer); }
   /// what the buffer stages did in the last round
-  const internal::Buffer_report& buffer_report() const { return m_buffer_report; }
+  const Buffer_report& buffer_report() const { return m_buffer_report; }
   static constexpr int max_refinement_rounds = 16;
   /// valid rounds refined for angles that did not lower their count, at most
   static constexpr int max_stalled_angle_rounds = 3;
@@ -463,7 +464,7 @@ private:
     std::array<std::size_t, 4> removed{ { 0, 0, 0, 0 } };
     std::vector<std::size_t> point_vertices;
     std::vector<double> core_vertex_size;
-    internal::Buffer_report buffer_report;
+    Buffer_report buffer_report;
     std::optional<Mesh_quality_2> quality;
   };
 
@@ -895,7 +896,8 @@ private:
   std::vector<std::pair<internal::Point_2d, double>> m_extra_refinement; // (point, local size)
   std::size_t m_requests_applied = 0; // of m_extra_refinement, by the last build_quadtree()
   bool m_requests_refined = false;    // whether those it applied first split a cell
-  internal::Buffer_report m_buffer_report;
+  Buffer_report m_buffer_report;
+  internal::Refinement_requests m_buffer_requests; // the last round's
   std::optional<Mesh_quality_2> m_quality;
   std::vector<std::size_t> m_lost_points; // by anchored point: see clear_buffer_zone()
   std::vector<std::size_t> m_point_names; // the input index of each anchored point

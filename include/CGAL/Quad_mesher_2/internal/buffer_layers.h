@@ -68,6 +68,7 @@
 // a corner under 45° does), are reported as refinement requests: the mesher refines the
 // quadtree there and starts again.
 
+#include <CGAL/Quad_mesher_2/Buffer_report.h>
 #include <CGAL/Quad_mesher_2/Domain_2.h>
 #include <CGAL/Quad_mesher_2/Domain_loops_2.h>
 #include <CGAL/Quad_mesher_2/Quad_mesh_2.h>
@@ -382,35 +383,13 @@ inline double quad_badness(const std::array<Point_2d, 4>& q)
   return std::asin((std::min)(worst_cos, 1.0)) * (180.0 / 3.14159265358979323846);
 }
 
-/// what the buffer construction did, and where the quadtree should be finer
-struct Buffer_report
+/// where the quadtree should be finer: points with the local size there
+struct Refinement_requests
 {
-  /// core boundary vertices moved out into the buffer (notches opened), and in (corners cut)
-  std::size_t moved_notches = 0;
-  std::size_t cut_corners = 0;
-  std::size_t filled_notches = 0;
-  std::size_t split_corners = 0;
-  /// after the templates: core boundary vertices whose buffer-side angle is outside
-  /// [112.5°, 225°] (Lemma 2), and those of them not within 2h of an input corner
-  std::size_t buffer_angles_out = 0;
-  std::size_t buffer_angles_out_away_from_corners = 0;
-  /// core boundary vertices moved by the plane search, and interior core vertices moved to
-  /// give them room
-  std::size_t searched_vertices = 0;
-  std::size_t shaped_interior = 0;
-  std::size_t first_layer_quads = 0;
-  std::size_t second_layer_quads = 0;
-  std::size_t invalid_quads = 0;
-  std::size_t bad_angle_quads = 0;
-  /// the bad-angle quads among the core's quads the templates changed, the first layer's
-  /// (Lemma 3) and the second's (Lemma 4)
-  std::array<std::size_t, 3> bad_angle_quads_by_layer{ { 0, 0, 0 } };
-  /// points (with the local size there) where a finer quadtree would make the buffer valid
-  std::vector<std::pair<Point_2d, double>> refine_requests;
-  /// the same, where it would bring angles into [45, 135]
-  std::vector<std::pair<Point_2d, double>> angle_requests;
-  /// a message when the buffer could not be built (core loops not matching the domain's)
-  std::string failure;
+  /// where a finer quadtree would make the buffer valid
+  std::vector<std::pair<Point_2d, double>> for_validity;
+  /// where it would bring angles into [45, 135]
+  std::vector<std::pair<Point_2d, double>> for_angles;
 };
 
 /// The buffer stages on a core mesh. The mesh's points are the core's; `local_size[v]` the
@@ -438,6 +417,7 @@ public:
   }
 
   const Buffer_report& report() const { return m_report; }
+  const Refinement_requests& requests() const { return m_requests; }
 
   /// Matches the core's boundary loops with the domain's; false (with `report().failure` and
   /// refinement requests) if they do not match one to one.
@@ -487,9 +467,9 @@ public:
         for(const Point_2d& p : m_locator->loop(l)) {
           const Loop_locator::Hit h = m_locator->closest(p, 1e-6 * m_locator->diagonal(), l, true);
           const double size = std::isfinite(h.dist) ? 0.25 * h.dist : 0.0;
-          m_report.refine_requests.emplace_back(p, 2 * size);
+          m_requests.for_validity.emplace_back(p, 2 * size);
           if(size > 0)
-            m_report.refine_requests.emplace_back(Point_2d{ 0.5 * (p.x + h.point.x), 0.5 * (p.y + h.point.y) }, 2 * size);
+            m_requests.for_validity.emplace_back(Point_2d{ 0.5 * (p.x + h.point.x), 0.5 * (p.y + h.point.y) }, 2 * size);
         }
       }
     return ok;
@@ -764,7 +744,7 @@ public:
         ++m_report.bad_angle_quads_by_layer[q < m_layer_begin[0] ? 0 : q < m_layer_begin[1] ? 1 : 2];
       }
       if(!valid || bad_angle) {
-        auto& requests = valid ? m_report.angle_requests : m_report.refine_requests;
+        auto& requests = valid ? m_requests.for_angles : m_requests.for_validity;
         double size = HUGE_VAL; // of the finest cells the quad hangs from
         for(int c = 0; c < 4; ++c)
           if(Q[c] < m_core_points) {
@@ -1370,7 +1350,7 @@ private:
   void request_all(std::size_t c)
   {
     for(std::size_t v : m_cycles[c])
-      m_report.refine_requests.emplace_back(m_xy[v], m_size[v]);
+      m_requests.for_validity.emplace_back(m_xy[v], m_size[v]);
   }
 
   std::size_t add_point(const Point_2d& p)
@@ -2945,6 +2925,7 @@ private:
   double m_feature_angle = 20.0;  // turning (degrees) that makes a loop vertex a corner
   double m_chord_tolerance = 0;   // how far the mesh boundary may leave the input's
   Buffer_report m_report;
+  Refinement_requests m_requests;
 };
 
 } // namespace internal
