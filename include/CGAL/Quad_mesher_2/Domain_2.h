@@ -14,9 +14,22 @@ namespace CGAL {
 namespace Quad_mesher_2 {
 
 /// \ingroup PkgQuadMesher2Ref
-/// A planar input in the sense of Triangle's `.poly` files: points, segments between them
-/// (indices into `points`, 0-based) and hole seed points (each marks the face that contains
-/// it as outside the domain). A point cloud is a `Domain_2` without segments.
+/// A planar input in the sense of Triangle's `.poly` files: points, segments between them and
+/// hole seed points.
+///
+/// - `segments`: each is two 0-based indices into `points`. The segments form boundary
+///   <em>loops</em>: closed chains, in which every point on a segment is the end of exactly two.
+///   The outer loop and the hole loops are given alike, in either orientation (the mesher
+///   orients them, see `extract_loops()`); loops must be simple and disjoint.
+/// - `holes`: a hole is marked by a seed point strictly inside it (not on a segment), which
+///   makes the region it lies in outside the domain; with seed points, every hole needs one.
+///   With none at all, nesting decides: inside an outermost loop is domain, inside a loop
+///   nested in it a hole, inside the next domain again, and so on.
+/// - <em>Isolated points</em> are the points on no segment; each must lie strictly inside the
+///   domain, and the points stage (`Mesh_criteria_2::points_as_vertices()`, the default) makes
+///   each one a mesh vertex.
+/// - A <em>point cloud</em> is a `Domain_2` without segments (`is_point_cloud()`): every
+///   point becomes a mesh vertex.
 template <class GeomTraits>
 struct Domain_2
 {
