@@ -2,8 +2,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): Quad_mesher_2 developers
 //
-// Small double-precision helpers for the shape of one quadrilateral: corner angles, scaled
-// Jacobians, edge lengths. Quality measures are computed in `double` by design (see
+// Small double-precision helpers for the shape of one quadrilateral (corner angles, scaled
+// Jacobians, edge lengths, its deviation from a square's angles) and the plane geometry the
+// buffer stages search with (projections onto segments, bisectors, turns). Quality measures are computed in `double` by design (see
 // STYLE.md, "Exactness"); no topological decision is taken here.
 
 #ifndef CGAL_QUAD_MESHER_2_INTERNAL_QUAD_GEOMETRY_H
@@ -154,6 +155,78 @@ inline double quad_aspect_ratio(const std::array<Point_2d, 4>& q)
   if(!(lo > 0))
     return std::numeric_limits<double>::infinity();
   return hi / lo;
+}
+
+/// the parameter in [0, 1] of the point of segment (a, b) nearest to p
+inline double nearest_segment_parameter(const Point_2d& p, const Point_2d& a, const Point_2d& b)
+{
+  const Point_2d ab = minus_2d(b, a);
+  const double len2 = dot_2d(ab, ab);
+  const double t = len2 > 0 ? dot_2d(minus_2d(p, a), ab) / len2 : 0.0;
+  return (std::min)(1.0, (std::max)(0.0, t));
+}
+
+/// a + t (b - a)
+inline Point_2d along_2d(const Point_2d& a, const Point_2d& b, double t)
+{
+  return Point_2d{ a.x + t * (b.x - a.x), a.y + t * (b.y - a.y) };
+}
+
+/// the distance from p to segment (a, b)
+inline double point_segment_distance(const Point_2d& p, const Point_2d& a, const Point_2d& b)
+{
+  return length_2d(minus_2d(p, along_2d(a, b, nearest_segment_parameter(p, a, b))));
+}
+
+/// v scaled to unit length (zero stays zero)
+inline Point_2d normalized_2d(const Point_2d& v)
+{
+  const double l = length_2d(v);
+  return l > 0 ? Point_2d{v.x / l, v.y / l} : Point_2d{0, 0};
+}
+
+/// the angle (degrees, in [0, 360)) on the right of the path a -> b -> c, at b
+inline double right_side_angle(const Point_2d& a, const Point_2d& b, const Point_2d& c)
+{
+  const Point_2d t1 = minus_2d(b, a), t2 = minus_2d(c, b);
+  const double turn = std::atan2(cross_2d(t1, t2), dot_2d(t1, t2)) * 180.0 / 3.14159265358979323846;
+  return 180.0 + turn;
+}
+
+/// the unit bisector of the angle on the right of a -> b -> c
+inline Point_2d right_bisector(const Point_2d& a, const Point_2d& b, const Point_2d& c)
+{
+  const Point_2d t1 = normalized_2d(minus_2d(b, a)), t2 = normalized_2d(minus_2d(c, b));
+  Point_2d s{t1.x + t2.x, t1.y + t2.y};
+  if(length_2d(s) < 1e-9) // a spike: the bisector points back along the incoming edge
+    return Point_2d{-t1.x, -t1.y};
+  return normalized_2d(Point_2d{s.y, -s.x});
+}
+
+/// largest deviation of a quad's angles from 90 degrees; a large penalty if it is not strictly
+/// convex and counter-clockwise
+inline double quad_badness(const std::array<Point_2d, 4>& q)
+{
+  // at a convex corner |angle - 90| = asin(|cos angle|), increasing in |cos|: one asin for
+  // the worst corner instead of an atan2 per corner (the buffer's inner loops call this)
+  // edge k runs from corner k to corner k + 1; each length is taken once
+  std::array<Point_2d, 4> e;
+  std::array<double, 4> len;
+  for(int k = 0; k < 4; ++k) {
+    e[k] = minus_2d(q[(k + 1) % 4], q[k]);
+    len[k] = length_2d(e[k]);
+  }
+  double worst_cos = 0;
+  for(int c = 0; c < 4; ++c) {
+    const Point_2d& in = e[(c + 3) % 4];
+    const Point_2d& out = e[c];
+    const double cr = cross_2d(in, out);
+    const double l1 = len[c], l2 = len[(c + 3) % 4];
+    if(!(cr > 1e-6 * l1 * l2) || l1 == 0 || l2 == 0) // flat corners count as invalid
+      return 1000.0 + (cr < 0 ? 100.0 : 0.0);
+    worst_cos = (std::max)(worst_cos, std::abs(dot_2d(out, in)) / (l1 * l2));
+  }
+  return std::asin((std::min)(worst_cos, 1.0)) * (180.0 / 3.14159265358979323846);
 }
 
 } // namespace internal

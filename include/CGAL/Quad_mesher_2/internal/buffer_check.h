@@ -1,0 +1,115 @@
+// Copyright (c) 2026 Quad_mesher_2 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Quad_mesher_2 developers
+//
+// The buffer's final check: every quad the buffer stages made or changed is checked with the
+// kernel's exact predicates (strictly convex, counter-clockwise). Quads that are invalid, or have
+// an angle outside [45°, 135°] that no input corner forces (only a corner under 45° does), are
+// reported as refinement requests: the mesher refines the quadtree there and starts again.
+
+#ifndef CGAL_QUAD_MESHER_2_INTERNAL_BUFFER_CHECK_H
+#define CGAL_QUAD_MESHER_2_INTERNAL_BUFFER_CHECK_H
+
+#include <CGAL/Quad_mesher_2/internal/buffer_zone.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Quad_mesher_2 {
+namespace internal {
+
+/// The final check of one buffer zone (see the file comment).
+template <class K>
+class Buffer_check : Buffer_tolerances
+{
+  typedef std::array<std::size_t, 4> Quad;
+
+public:
+  explicit Buffer_check(Buffer_zone<K>& zone) : m_zone(zone) {}
+
+  /// Checks every quad the buffer stages made or changed with exact predicates and counts
+  /// those with an angle outside [45, 135] that no sharp input corner forces; records
+  /// refinement requests at both.
+  void check_quads()
+  {
+    for(std::size_t q = 0; q < m_zone.mesh.quads.size(); ++q) {
+      const Quad& Q = m_zone.mesh.quads[q];
+      if(!m_zone.made_or_changed(Q)) continue;
+      const bool valid = m_zone.is_valid_quad(Q);
+      std::array<Point_2d, 4> P;
+      for(int c = 0; c < 4; ++c) P[c] = m_zone.xy[Q[c]];
+      bool bad_angle = false;
+      if(valid) {
+        std::array<double, 4> a;
+        for(int c = 0; c < 4; ++c) a[c] = corner_angle_degrees(P[(c + 3) % 4], P[c], P[(c + 1) % 4]);
+        // a quad spanning a corner alpha under 45 degrees may have angles in [alpha, 180 - alpha]
+        double lo = 45.0;
+        for(int c = 0; c < 4; ++c)
+          if(m_zone.forced_angle(Q[c], a[c])) lo = (std::min)(lo, m_zone.input_corner_angle(Q[c]));
+        for(int c = 0; c < 4; ++c)
+          if((a[c] < lo - verifier_slack || a[c] > 180.0 - lo + verifier_slack) && !m_zone.forced_angle(Q[c], a[c]))
+            bad_angle = true;
+      }
+      if(!valid) ++m_zone.report.invalid_quads;
+      if(bad_angle) {
+        ++m_zone.report.bad_angle_quads;
+        ++m_zone.report.bad_angle_quads_by_layer[q < m_zone.layer_begin[0] ? 0 : q < m_zone.layer_begin[1] ? 1 : 2];
+      }
+      if(!valid || bad_angle) {
+        auto& requests = valid ? m_zone.requests.for_angles : m_zone.requests.for_validity;
+        double size = HUGE_VAL; // of the finest cells the quad hangs from
+        for(int c = 0; c < 4; ++c)
+          if(Q[c] < m_zone.core_points) {
+            requests.emplace_back(m_zone.xy[Q[c]], m_zone.local_size[Q[c]]);
+            size = (std::min)(size, m_zone.local_size[Q[c]]);
+          }
+        for(int c = 0; c < 4; ++c)
+          if(Q[c] >= m_zone.core_points && Q[c] - m_zone.core_points < m_zone.first_core.size()) {
+            const std::size_t b = m_zone.first_core[Q[c] - m_zone.core_points];
+            requests.emplace_back(m_zone.xy[b], m_zone.local_size[b]);
+            size = (std::min)(size, m_zone.local_size[b]);
+          }
+        // not for an invalid quad: a broken buffer's quads can span tens of cells each, and
+        // their corners' cells suffice (a disc with thin elliptic holes asked for 1.8 million)
+        if(valid) request_over_area(P, size, requests);
+      }
+    }
+  }
+
+private:
+  // A buffer quad is about as large as the cells it hangs from. One far larger spans a stretch
+  // the core does not reach: the clearance peeled a strip one cell thick from its dead end (an
+  // arm 0.13 wide turned 45.37 degrees, whose cells had 4.2 per width, lost its core for 0.3
+  // of its length, and refining at the quad's corners never brought it back). Requests at
+  // cells' spacing over the quad's box bring the core there.
+  void request_over_area(const std::array<Point_2d, 4>& P, double size,
+                         std::vector<std::pair<Point_2d, double>>& requests) const
+  {
+    if(!(size > 0) || !std::isfinite(size)) return;
+    double x0 = P[0].x, x1 = P[0].x, y0 = P[0].y, y1 = P[0].y;
+    for(const Point_2d& p : P) {
+      x0 = (std::min)(x0, p.x); x1 = (std::max)(x1, p.x);
+      y0 = (std::min)(y0, p.y); y1 = (std::max)(y1, p.y);
+    }
+    // a cell's few times: the corners' requests suffice; and at most 64 requests a quad
+    const double span = (std::max)(x1 - x0, y1 - y0);
+    if(span <= 4 * size) return;
+    const double step = (std::max)(size, span / 8);
+    for(double x = x0 + step / 2; x < x1; x += step)
+      for(double y = y0 + step / 2; y < y1; y += step)
+        requests.emplace_back(Point_2d{ x, y }, size);
+  }
+
+  Buffer_zone<K>& m_zone;
+};
+
+} // namespace internal
+} // namespace Quad_mesher_2
+} // namespace CGAL
+
+#endif // CGAL_QUAD_MESHER_2_INTERNAL_BUFFER_CHECK_H

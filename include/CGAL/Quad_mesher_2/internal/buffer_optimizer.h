@@ -1,0 +1,298 @@
+// Copyright (c) 2026 Quad_mesher_2 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Quad_mesher_2 developers
+//
+// The buffer's local min-max angle optimisation, run after the second buffer layer. It is not
+// in the paper, whose layers place their points once: here buffer vertices move (boundary ones
+// slide along their input edge) while that lowers the invalid, out-of-range and worst quads
+// around them, and no move makes a quad invalid.
+
+#ifndef CGAL_QUAD_MESHER_2_INTERNAL_BUFFER_OPTIMIZER_H
+#define CGAL_QUAD_MESHER_2_INTERNAL_BUFFER_OPTIMIZER_H
+
+#include <CGAL/Quad_mesher_2/internal/buffer_zone.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Quad_mesher_2 {
+namespace internal {
+
+/// The optimisation of one buffer zone (see the file comment).
+template <class K>
+class Buffer_optimizer : Buffer_tolerances
+{
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 Point_2;
+  typedef std::array<std::size_t, 4> Quad;
+
+public:
+  explicit Buffer_optimizer(Buffer_zone<K>& zone) : m_zone(zone) {}
+
+  /// Local min-max angle optimisation of the buffer: the first buffer points move freely, the
+  /// new boundary points slide along their input edge, the core's boundary vertices move too;
+  /// a move is kept only if it lowers the largest deviation from 90° of the quads around the
+  /// vertex and keeps them convex and unfolded. Then, around each quad still outside
+  /// [45°, 135°], the core vertices within two quads of it may move too. Input vertices and
+  /// `fixed_points` (a domain's isolated points) never move.
+  void optimize(const std::vector<std::size_t>& fixed_points, int passes = 12)
+  {
+    const Vertex_quads quads_at(m_zone.mesh.quads, m_zone.mesh.points.size());
+    std::vector<std::size_t> movable;
+    for(const auto& cyc : m_zone.cycles)
+      movable.insert(movable.end(), cyc.begin(), cyc.end());
+    for(std::size_t v = m_zone.core_points; v < m_zone.mesh.points.size(); ++v)
+      if(!m_zone.is_input_vertex(v))
+        movable.push_back(v);
+    // (invalid quads around v, quads outside [45, 135] around it, the worst deviation from
+    // 90 degrees), compared in this order: no move may make a quad invalid. A move must lower
+    // the worst by more than rounding: 1e-9 degrees is within it on small cells far from the
+    // origin, where moves that gain nothing made a translated domain's mesh differ.
+    struct Local
+    {
+      int invalid = 0, out = 0;
+      double worst = 0;
+      bool operator<(const Local& o) const
+      {
+        if(invalid != o.invalid) return invalid < o.invalid;
+        if(out != o.out) return out < o.out;
+        return worst < o.worst - angle_tolerance;
+      }
+    };
+    // above the whole-mesh check's merge distance (1e-9 of the diagonal), and well below the
+    // edges of the finest cells, so that a domain's smallest features keep room to move
+    double finest = HUGE_VAL;
+    for(double h : m_zone.local_size)
+      if(h > 0) finest = (std::min)(finest, h);
+    const double min_edge = (std::max)(2e-9 * m_zone.locator->diagonal(),
+                                       (std::min)(1e-8 * m_zone.locator->diagonal(), finest / 4));
+    const double min_edge2 = min_edge * min_edge;
+    // With `bound`, the caller keeps the result only if it is below *bound: every quad only adds
+    // to the cost, so the sum stops as soon as it cannot be (same decisions, far fewer quads).
+    auto local_cost = [&](std::size_t v, const Local* bound) {
+      Local r;
+      for(std::size_t q : quads_at[v]) {
+        const double b = m_zone.quad_cost(m_zone.mesh.quads[q]);
+        r.worst = (std::max)(r.worst, b);
+        if(b >= 1000.0) ++r.invalid;
+        else if(b > 45.0 + angle_tolerance) ++r.out;
+        const Quad& Q = m_zone.mesh.quads[q];
+        const int c = corner_of(Q, v);
+        // an edge collapsing to a point keeps the angles fine but merges two vertices: the
+        // whole-mesh check rejects vertices within 1e-9 of the diagonal
+        for(int side : { 1, 3 }) {
+          const Point_2d d = minus_2d(m_zone.xy[Q[(c + side) % 4]], m_zone.xy[v]);
+          if(dot_2d(d, d) <= min_edge2) ++r.invalid;
+        }
+        if(bound != nullptr && !(r < *bound)) return r;
+      }
+      const double expected = m_zone.slides.count(v) ? 180.0 : (m_zone.is_core_boundary(v) ? -1 : 360.0);
+      if(expected > 0) {
+        double angle_sum = 0;
+        for(std::size_t q : quads_at[v]) {
+          const Quad& Q = m_zone.mesh.quads[q];
+          const int c = corner_of(Q, v);
+          angle_sum += corner_angle_degrees(m_zone.xy[Q[(c + 3) % 4]], m_zone.xy[v], m_zone.xy[Q[(c + 1) % 4]]);
+        }
+        if(std::abs(angle_sum - expected) > 1e-6)
+          r.invalid += 1 << 20; // folded
+      }
+      return r;
+    };
+    // a vertex whose quads have not changed since it was last tried would not move: only
+    // vertices sharing a quad with a moved one are tried again (same result, far fewer tries)
+    std::vector<char> dirty(m_zone.mesh.points.size(), 1), dirty_next(m_zone.mesh.points.size(), 0);
+    std::vector<Point_2d> targets;
+    auto run_passes = [&](const std::vector<std::size_t>& vertices) {
+      for(int pass = 0; pass < passes; ++pass) {
+        bool improved = false;
+        for(std::size_t v : vertices) {
+          if(!dirty[v]) continue;
+          const Local current = local_cost(v, nullptr);
+          if(current.worst <= 30.0) continue; // within [60, 120]: good enough
+          const Point_2d old = m_zone.xy[v];
+          targets.push_back(m_zone.parallelogram_targets(v, quads_at, targets));
+          add_turns_about_corners(v, quads_at, targets);
+          Point_2d mean{0, 0};
+          for(std::size_t k = 0; k + 1 < targets.size(); ++k) { mean.x += targets[k].x; mean.y += targets[k].y; }
+          mean.x /= double(targets.size() - 1); mean.y /= double(targets.size() - 1);
+          targets.push_back(mean);
+          Local best = current;
+          Point_2d best_p = old;
+          for(const Point_2d& t : targets)
+            for(double step : { 1.0, 0.5, 0.25, 0.1 }) {
+              Point_2d p{old.x + step * (t.x - old.x), old.y + step * (t.y - old.y)};
+              if(!slide_to(v, p)) continue;
+              m_zone.xy[v] = p;
+              const Local c = local_cost(v, &best);
+              m_zone.xy[v] = old;
+              if(c < best) {
+                best = c;
+                best_p = p;
+              }
+            }
+          if(best_p.x != old.x || best_p.y != old.y) {
+            m_zone.xy[v] = best_p;
+            improved = true;
+            for(std::size_t q : quads_at[v])
+              for(std::size_t w : m_zone.mesh.quads[q])
+                dirty[w] = dirty_next[w] = 1;
+          }
+        }
+        if(!improved) break;
+        dirty.swap(dirty_next);
+        std::fill(dirty_next.begin(), dirty_next.end(), 0);
+      }
+    };
+    run_passes(movable);
+    // A quad still outside [45, 135] (often just: a core quad beside a moved notch) may be
+    // mended by moving the core vertices within two quads of it too: the core keeps its
+    // connectivity, and no move may put one of its angles out of range.
+    auto ring = [&](const std::vector<std::size_t>& from) { // the vertices of their quads
+      std::vector<std::size_t> out;
+      for(std::size_t u : from)
+        for(std::size_t q : quads_at[u])
+          out.insert(out.end(), m_zone.mesh.quads[q].begin(), m_zone.mesh.quads[q].end());
+      std::sort(out.begin(), out.end());
+      out.erase(std::unique(out.begin(), out.end()), out.end());
+      return out;
+    };
+    std::vector<std::size_t> near_bad;
+    for(const Quad& q : m_zone.mesh.quads) {
+      const double b = m_zone.made_or_changed(q) ? m_zone.quad_cost(q) : 0.0;
+      if(b > 45.0 + angle_tolerance && b < 1000.0) near_bad.insert(near_bad.end(), q.begin(), q.end());
+    }
+    near_bad = ring(ring(near_bad));
+    std::vector<char> fixed(m_zone.mesh.points.size(), 0);
+    for(std::size_t v : fixed_points) if(v < fixed.size()) fixed[v] = 1;
+    near_bad.erase(std::remove_if(near_bad.begin(), near_bad.end(), [&](std::size_t x) {
+                     return x >= m_zone.core_points || m_zone.on_cycle(x) || m_zone.is_input_vertex(x) || fixed[x];
+                   }), near_bad.end());
+    std::vector<Point_2d> before(near_bad.size());
+    for(std::size_t k = 0; k < near_bad.size(); ++k) before[k] = m_zone.xy[near_bad[k]];
+    if(!near_bad.empty()) {
+      std::vector<std::size_t> all = near_bad;
+      all.insert(all.end(), movable.begin(), movable.end());
+      // the first passes left every clean vertex where a try would leave it again: only the
+      // repair's own vertices join the dirty ones (same moves, far fewer tries)
+      for(std::size_t v : near_bad) dirty[v] = 1;
+      run_passes(all);
+    }
+    write_back(movable);
+    std::vector<std::size_t> moved;
+    std::vector<Point_2d> moved_from;
+    std::vector<Point_2> exact_before; // for undoing: the core's points are not all doubles
+    for(std::size_t k = 0; k < near_bad.size(); ++k)
+      if(m_zone.xy[near_bad[k]].x != before[k].x || m_zone.xy[near_bad[k]].y != before[k].y) {
+        moved.push_back(near_bad[k]);
+        moved_from.push_back(before[k]);
+        exact_before.push_back(m_zone.mesh.points[near_bad[k]]);
+      }
+    write_back(moved);
+    // the kernel's predicates have the last word: a core quad the repair moves left nearly flat
+    // or not strictly convex undoes them all
+    bool valid = true;
+    for(std::size_t v : moved)
+      for(std::size_t q : quads_at[v]) valid = valid && m_zone.is_valid_quad(m_zone.mesh.quads[q]);
+    m_zone.repaired_mark.assign(m_zone.mesh.points.size(), 0);
+    for(std::size_t k = 0; k < moved.size(); ++k) {
+      if(valid) {
+        m_zone.repaired_mark[moved[k]] = 1; // check_quads() looks at its quads too
+      } else {
+        m_zone.xy[moved[k]] = moved_from[k];
+        m_zone.mesh.points[moved[k]] = exact_before[k];
+      }
+    }
+  }
+
+private:
+  // Beside an input corner, v turns about it to share the corner's angle evenly between the
+  // two quads it separates there (the paper's rotated bisectors, §5): one target per corner.
+  void add_turns_about_corners(std::size_t v, const Vertex_quads& quads_at,
+                               std::vector<Point_2d>& targets) const
+  {
+    const Point_2d old = m_zone.xy[v];
+    for(std::size_t q : quads_at[v]) {
+      const Quad& Q = m_zone.mesh.quads[q];
+      const int c = corner_of(Q, v);
+      for(int side : { 1, 3 }) {
+        const std::size_t corner = Q[(c + side) % 4];
+        if(!m_zone.is_input_vertex(corner)) continue;
+        const Point_2d& P = m_zone.xy[corner];
+        const Point_2d& w = m_zone.xy[Q[(c + 2 * side) % 4]]; // the corner's other neighbour in q
+        double other = -1; // the corner's angle in the other quad at v
+        for(std::size_t q2 : quads_at[v]) {
+          if(q2 == q) continue;
+          const Quad& R = m_zone.mesh.quads[q2];
+          for(int j = 0; j < 4; ++j)
+            if(R[j] == corner && (R[(j + 1) % 4] == v || R[(j + 3) % 4] == v))
+              other = corner_angle_degrees(m_zone.xy[R[(j + 3) % 4]], P, m_zone.xy[R[(j + 1) % 4]]);
+        }
+        const double here = corner_angle_degrees(w, P, old);
+        if(other < 0 || here <= 135.0) continue;
+        // turn v towards w by half the difference
+        const double turn = (here - other) / 2 * pi / 180;
+        const Point_2d d = minus_2d(old, P), e = minus_2d(w, P);
+        const double sense = cross_2d(d, e) > 0 ? 1.0 : -1.0;
+        targets.push_back(turned_about_2d(old, P, sense * turn));
+      }
+    }
+  }
+
+  // the optimised positions back into the kernel: boundary points exactly on their edge
+  void write_back(const std::vector<std::size_t>& movable)
+  {
+    for(std::size_t v : movable) {
+      auto it = m_zone.slides.find(v);
+      if(it == m_zone.slides.end()) {
+        m_zone.mesh.points[v] = m_zone.traits.construct_point_2_object()(FT(m_zone.xy[v].x), FT(m_zone.xy[v].y));
+      } else {
+        const auto& lv = m_zone.loops.loops[it->second.loop].vertices;
+        const Point_2& a = m_zone.domain.points[lv[it->second.edge]];
+        const Point_2& b = m_zone.domain.points[lv[(it->second.edge + 1) % lv.size()]];
+        const Point_2d A = to_point_2d(a), B = to_point_2d(b);
+        const Point_2d ab = minus_2d(B, A);
+        const double t = dot_2d(minus_2d(m_zone.xy[v], A), ab) / dot_2d(ab, ab);
+        m_zone.mesh.points[v] = m_zone.point_between(a, b, t);
+        m_zone.xy[v] = to_point_2d(m_zone.mesh.points[v]);
+      }
+    }
+  }
+
+  // for a sliding boundary point, moves `p` onto its edge strictly between its neighbours;
+  // false if there is no room
+  bool slide_to(std::size_t v, Point_2d& p) const
+  {
+    auto it = m_zone.slides.find(v);
+    if(it == m_zone.slides.end()) return true;
+    const std::size_t a = it->second.neighbors[0], b = it->second.neighbors[1];
+    if(a == none || b == none) return false;
+    const Point_2d A = m_zone.xy[a], B = m_zone.xy[b];
+    const Point_2d ab = minus_2d(B, A);
+    const double len2 = dot_2d(ab, ab);
+    if(!(len2 > 0)) return false;
+    const double t = (std::min)(0.9, (std::max)(0.1, dot_2d(minus_2d(p, A), ab) / len2));
+    // the neighbours must lie on this point's edge (or be its ends) for the chain to stay on it
+    const auto& lv = m_zone.loops.loops[it->second.loop].vertices;
+    const Point_2d E0 = to_point_2d(m_zone.domain.points[lv[it->second.edge]]);
+    const Point_2d E1 = to_point_2d(m_zone.domain.points[lv[(it->second.edge + 1) % lv.size()]]);
+    const Point_2d e = minus_2d(E1, E0);
+    const double el = length_2d(e);
+    if(std::abs(cross_2d(e, minus_2d(A, E0))) > 1e-9 * el * el || std::abs(cross_2d(e, minus_2d(B, E0))) > 1e-9 * el * el)
+      return false;
+    p = along_2d(A, B, t);
+    return true;
+  }
+
+  Buffer_zone<K>& m_zone;
+};
+
+} // namespace internal
+} // namespace Quad_mesher_2
+} // namespace CGAL
+
+#endif // CGAL_QUAD_MESHER_2_INTERNAL_BUFFER_OPTIMIZER_H

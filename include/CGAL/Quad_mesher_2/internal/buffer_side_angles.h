@@ -1,0 +1,86 @@
+// Copyright (c) 2026 Quad_mesher_2 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Quad_mesher_2 developers
+//
+// Lemma 2's measure: how far the buffer-side angles beta of the core boundary lie outside
+// [112.5°, 225°], the range from which the first buffer layer splits each into two angles within
+// [45°, 135°]. The boundary templates (boundary_templates.h, template_search.h,
+// connectivity_templates.h) move and add core points to lower it.
+
+#ifndef CGAL_QUAD_MESHER_2_INTERNAL_BUFFER_SIDE_ANGLES_H
+#define CGAL_QUAD_MESHER_2_INTERNAL_BUFFER_SIDE_ANGLES_H
+
+#include <CGAL/Quad_mesher_2/internal/buffer_tolerances.h>
+#include <CGAL/Quad_mesher_2/internal/quad_geometry.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace CGAL {
+namespace Quad_mesher_2 {
+namespace internal {
+
+// how far a buffer-side angle lies outside [112.5, 225], the range the paper's templates
+// leave (Lemma 2): there the first layer's two quads at the vertex split it within [45, 135]
+inline double buffer_angle_excess(double beta)
+{
+  return (std::max)(0.0, beta - 225.0) + (std::max)(0.0, 112.5 - beta);
+}
+
+// buffer_angle_excesses() of any number of buffer-side angles
+template <class Betas>
+double excess_score(const Betas& betas, bool count_first)
+{
+  double out = 0, worst = 0, sum = 0;
+  for(double beta : betas) {
+    const double x = (std::max)(0.0, beta - (225.0 + Buffer_tolerances::angle_tolerance / 2))
+                     + (std::max)(0.0, (112.5 - Buffer_tolerances::angle_tolerance / 2) - beta);
+    out += x > 0 ? 1 : 0;
+    worst = (std::max)(worst, x);
+    sum += x;
+  }
+  return (count_first ? 1000.0 * out : 0.0) + worst + 0.1 * sum;
+}
+
+// How far the buffer-side angles at a, b and c (consecutive on a core cycle between a2 and
+// c2) lie outside [112.5, 225] widened by half the angle tolerance (what is within the
+// tolerance counts as in), in one number, so that a search lowering it by more than rounding
+// ends: how many are out first if `count_first` (a step of b that lets a neighbour out for a
+// smaller worst one leaves more out), then the worst, then a tenth of their sum.
+inline double buffer_angle_excesses(const Point_2d& a2, const Point_2d& a, const Point_2d& b,
+                             const Point_2d& c, const Point_2d& c2, bool count_first = true)
+{
+  const std::array<double, 3> betas{ right_side_angle(a2, a, b), right_side_angle(a, b, c), right_side_angle(b, c, c2) };
+  return excess_score(betas, count_first);
+}
+
+// the largest buffer_angle_excess() of the three buffer-side angles at a, b and c, which
+// are consecutive on a core cycle between a2 and c2 (what a template step at b changes)
+inline double worst_buffer_angle_excess(const Point_2d& a2, const Point_2d& a, const Point_2d& b,
+                                 const Point_2d& c, const Point_2d& c2)
+{
+  return (std::max)({ buffer_angle_excess(right_side_angle(a2, a, b)),
+                      buffer_angle_excess(right_side_angle(a, b, c)),
+                      buffer_angle_excess(right_side_angle(b, c, c2)) });
+}
+
+// how far the angle at b (between a and c) may be off by the rounding of their coordinates
+// to doubles, in degrees, and at least angle_tolerance: far from the origin a double holds
+// few digits of a small domain's edges (a disc 1e-4 across at 1e5: kites of exactly 225
+// degrees came out 6e-4 over, and were split as if jammed)
+inline double rounding_tolerance(const Point_2d& a, const Point_2d& b, const Point_2d& c)
+{
+  double scale = 0;
+  for(const Point_2d* p : { &a, &b, &c }) scale = (std::max)({ scale, std::abs(p->x), std::abs(p->y) });
+  const double edge = (std::min)(length_2d(minus_2d(a, b)), length_2d(minus_2d(c, b)));
+  return (std::max)(Buffer_tolerances::angle_tolerance,
+                    64 * std::numeric_limits<double>::epsilon() * scale / edge * 180 / Buffer_tolerances::pi);
+}
+
+} // namespace internal
+} // namespace Quad_mesher_2
+} // namespace CGAL
+
+#endif // CGAL_QUAD_MESHER_2_INTERNAL_BUFFER_SIDE_ANGLES_H

@@ -1,0 +1,402 @@
+// Copyright (c) 2026 Quad_mesher_2 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Quad_mesher_2 developers
+//
+// The state the buffer stages (paper §4.4-§5) share: the mesh being built and its points in
+// doubles, the core's boundary cycles matched one to one with the domain's loops, and what each
+// point is (on a cycle, moved by a stage, an input vertex, sliding along an input edge), with
+// the queries every stage asks of them. Each stage is a class of its own header working on one
+// `Buffer_zone`; `Buffer_layers` (buffer_layers.h) runs them in order.
+
+#ifndef CGAL_QUAD_MESHER_2_INTERNAL_BUFFER_ZONE_H
+#define CGAL_QUAD_MESHER_2_INTERNAL_BUFFER_ZONE_H
+
+#include <CGAL/Quad_mesher_2/Buffer_report.h>
+#include <CGAL/Quad_mesher_2/Domain_2.h>
+#include <CGAL/Quad_mesher_2/Domain_loops_2.h>
+#include <CGAL/Quad_mesher_2/Quad_mesh_2.h>
+#include <CGAL/Quad_mesher_2/internal/buffer_tolerances.h>
+#include <CGAL/Quad_mesher_2/internal/loop_locator.h>
+#include <CGAL/Quad_mesher_2/internal/mesh_adjacency.h>
+#include <CGAL/Quad_mesher_2/internal/quad_geometry.h>
+
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Quad_mesher_2 {
+namespace internal {
+
+/// where the quadtree should be finer: points with the local size there
+struct Refinement_requests
+{
+  /// where a finer quadtree would make the buffer valid
+  std::vector<std::pair<Point_2d, double>> for_validity;
+  /// where it would bring angles into [45, 135]
+  std::vector<std::pair<Point_2d, double>> for_angles;
+};
+
+template <class K>
+class Buffer_zone : public Buffer_tolerances
+{
+public:
+  typedef typename K::FT FT;
+  typedef typename K::Point_2 Point_2;
+  typedef Quad_mesh_2<Point_2> Mesh;
+  typedef std::array<std::size_t, 4> Quad;
+
+  // a new boundary point: it may slide along its input edge between its chain neighbours
+  struct Slide
+  {
+    std::size_t loop, edge;
+    std::array<std::size_t, 2> neighbors;
+  };
+
+  Buffer_zone(Mesh& core, const std::vector<double>& core_size, const Domain_2<K>& input, const Domain_loops_2<K>& input_loops,
+              const K& kernel)
+    : mesh(core), local_size(core_size), domain(input), loops(input_loops), traits(kernel)
+  {
+    locator = make_loop_locator(domain, loops);
+    chord_tolerance = 1e-3 * locator->diagonal();
+    xy.reserve(mesh.points.capacity()); // the room the clearance left for the layers' points
+    xy.resize(mesh.points.size());
+    for(std::size_t v = 0; v < mesh.points.size(); ++v)
+      xy[v] = to_point_2d(mesh.points[v]);
+    core_points = mesh.points.size();
+  }
+
+  /// Matches the core's boundary loops with the domain's; false (with `report().failure` and
+  /// refinement requests) if they do not match one to one.
+  bool match_loops()
+  {
+    quads_at = std::make_unique<Vertex_quads>(mesh.quads, mesh.points.size());
+    cycles = mesh_boundary_cycles(mesh.quads, *quads_at, mesh.points.size());
+    // The layers add a few quads and points per core boundary vertex (about two each on a
+    // disc): room for four each now (the clearance's core has it already), or the first one
+    // added copies the whole core's arrays into fresh memory.
+    std::size_t boundary_vertices = 0;
+    for(const auto& cyc : cycles)
+      boundary_vertices += cyc.size();
+    mesh.quads.reserve(mesh.quads.size() + 4 * boundary_vertices);
+    mesh.points.reserve(mesh.points.size() + 4 * boundary_vertices);
+    xy.reserve(xy.size() + 4 * boundary_vertices);
+    cycle_loop.assign(cycles.size(), none);
+    on_cycle_mark.assign(mesh.points.size(), 0);
+    std::vector<std::size_t> owner(loops.loops.size(), none);
+    bool ok = true;
+    for(std::size_t c = 0; c < cycles.size(); ++c) {
+      std::vector<std::size_t> votes(loops.loops.size(), 0);
+      for(std::size_t v : cycles[c])
+        ++votes[locator->closest(xy[v], 2 * local_size[v]).loop];
+      const std::size_t l = std::size_t(std::max_element(votes.begin(), votes.end()) - votes.begin());
+      const bool same_turn = (cycle_area(c) > 0) == loops.loops[l].is_outer;
+      if(owner[l] != none || !same_turn || 2 * votes[l] <= cycles[c].size()) {
+        ok = false;
+        // the smaller of two cycles following one loop is a piece of core cut off by a
+        // narrow passage: refine along it
+        std::size_t cut = c;
+        if(owner[l] != none && cycles[owner[l]].size() < cycles[c].size()) std::swap(cut, owner[l]);
+        request_all(cut);
+        report.failure = "the core mesh's boundary does not follow the domain's loops one to one";
+        continue;
+      }
+      owner[l] = c;
+      cycle_loop[c] = l;
+      for(std::size_t v : cycles[c]) on_cycle_mark[v] = 1;
+    }
+    for(std::size_t l = 0; l < owner.size(); ++l)
+      if(owner[l] == none) {
+        ok = false;
+        report.failure = "no core mesh is left near loop " + std::to_string(l)
+                           + " of the domain: its cells are too coarse";
+        // cells a quarter of its gap to the other loops, on it and halfway across the gap
+        for(const Point_2d& p : locator->loop(l)) {
+          const Loop_locator::Hit h = locator->closest(p, 1e-6 * locator->diagonal(), l, true);
+          const double size = std::isfinite(h.dist) ? 0.25 * h.dist : 0.0;
+          requests.for_validity.emplace_back(p, 2 * size);
+          if(size > 0)
+            requests.for_validity.emplace_back(Point_2d{ 0.5 * (p.x + h.point.x), 0.5 * (p.y + h.point.y) }, 2 * size);
+        }
+      }
+    return ok;
+  }
+
+  bool on_cycle(std::size_t v) const { return v < on_cycle_mark.size() && on_cycle_mark[v] != 0; }
+
+  // a core vertex the repair moves of optimize() moved
+  bool repaired(std::size_t v) const { return v < repaired_mark.size() && repaired_mark[v] != 0; }
+
+  // an interior core vertex the templates moved (relax_interior())
+  bool shaped(std::size_t v) const { return v < shaped_mark.size() && shaped_mark[v] != 0; }
+
+  // a quad the buffer stages made or changed: a vertex new, on the core boundary or moved by
+  // the templates or the repair (the other core quads keep their lattice angles, in [45, 135])
+  bool made_or_changed(const Quad& Q) const
+  {
+    for(std::size_t v : Q)
+      if(v >= core_points || on_cycle(v) || repaired(v) || shaped(v)) return true;
+    return false;
+  }
+
+  bool is_core_boundary(std::size_t v) const
+  {
+    return v < core_points && on_cycle(v) && !first_built;
+  }
+
+  double cycle_area(std::size_t c) const
+  {
+    double a = 0;
+    const auto& cyc = cycles[c];
+    const Point_2d& o = xy[cyc[0]]; // relative to a vertex: far from the origin, absolute
+                                       // coordinates would cancel
+    for(std::size_t i = 0; i < cyc.size(); ++i)
+      a += cross_2d(minus_2d(xy[cyc[i]], o), minus_2d(xy[cyc[(i + 1) % cyc.size()]], o));
+    return a / 2;
+  }
+
+  void request_all(std::size_t c)
+  {
+    for(std::size_t v : cycles[c])
+      requests.for_validity.emplace_back(xy[v], local_size[v]);
+  }
+
+  std::size_t add_point(const Point_2d& p)
+  {
+    mesh.points.push_back(traits.construct_point_2_object()(FT(p.x), FT(p.y)));
+    xy.push_back(p);
+    return mesh.points.size() - 1;
+  }
+
+  void add_quad(const Quad& q) { mesh.quads.push_back(q); }
+
+  // a new core point of local size `size` (the templates' new quads: the first buffer points
+  // come after every core point)
+  std::size_t add_core_point(const Point_2d& p, double size, bool on_boundary)
+  {
+    const std::size_t v = add_point(p);
+    local_size.push_back(size);
+    on_cycle_mark.push_back(on_boundary ? 1 : 0);
+    fixed_mark.push_back(0);
+    shaped_mark.push_back(0);
+    cleared_xy.push_back(p);
+    return v;
+  }
+
+  double input_corner_angle(std::size_t v) const
+  {
+    return v < corner_angle.size() ? corner_angle[v] : std::numeric_limits<double>::quiet_NaN();
+  }
+
+  // every input vertex on the chain has its corner angle
+  bool is_input_vertex(std::size_t v) const { return !std::isnan(input_corner_angle(v)); }
+
+  // true if `angle`, a quad's angle at mesh vertex v, is forced: v is an input corner sharper
+  // than 45 degrees and the quad spans all of it (one quad there keeps its angles in
+  // [alpha, 180 - alpha]; a split corner has less). A corner over 270 degrees forces nothing:
+  // a fan of three quads splits it within [45, 135].
+  bool forced_angle(std::size_t v, double angle) const
+  {
+    const double alpha = input_corner_angle(v);
+    return alpha < 45.0 && angle >= alpha - 1e-3; // false for NaN
+  }
+
+  // true if an input corner (a loop vertex turning by the feature angle or more) at an end of
+  // the boundary edge nearest core vertex b lies within 2 h(b) of it: its buffer is the
+  // corner's (§5), not Lemma 2's (bird_mx's 1.13, -6.79 moved off the lattice beside the tip
+  // left a first-layer quad inverted)
+  bool near_input_corner(std::size_t b) const
+  {
+    const Loop_locator::Hit h = locator->closest(xy[b], 2 * local_size[b]);
+    if(!(h.dist < 2 * local_size[b])) return false;
+    const std::size_t nv = locator->loop(h.loop).size();
+    for(std::size_t k : { h.edge, (h.edge + 1) % nv })
+      if(is_feature(h.loop, k) && length_2d(minus_2d(locator->loop(h.loop)[k], xy[b])) < 2 * local_size[b])
+        return true;
+    return false;
+  }
+
+  // the angle of loop l at its vertex k on the domain's side (the loops have it on their left)
+  double domain_angle(std::size_t l, std::size_t k) const
+  {
+    const auto& loop_xy = locator->loop(l);
+    const std::size_t nv = loop_xy.size();
+    return 360.0 - right_side_angle(loop_xy[(k + nv - 1) % nv], loop_xy[k], loop_xy[(k + 1) % nv]);
+  }
+
+  // a loop vertex the mesh must keep: it turns the boundary by the feature angle or more
+  bool is_feature(std::size_t l, std::size_t k) const
+  {
+    const auto& v = locator->loop(l);
+    const std::size_t nv = v.size();
+    const double beta = right_side_angle(v[(k + nv - 1) % nv], v[k], v[(k + 1) % nv]);
+    return std::abs(180.0 - beta) >= feature_angle;
+  }
+
+  // the mesh vertex of a chain node (an input vertex is added once, at its exact position)
+  std::size_t input_vertex_point(std::size_t l, std::size_t k)
+  {
+    const std::size_t input = loops.loops[l].vertices[k];
+    auto it = input_vertex.find(input);
+    if(it != input_vertex.end()) return it->second;
+    mesh.points.push_back(domain.points[input]);
+    xy.push_back(to_point_2d(domain.points[input]));
+    const std::size_t id = mesh.points.size() - 1;
+    input_vertex[input] = id;
+    const auto& lv = loops.loops[l].vertices;
+    const std::size_t nv = lv.size();
+    corner_angle.resize(id + 1, std::numeric_limits<double>::quiet_NaN());
+    corner_angle[id] = 360.0 - right_side_angle(to_point_2d(domain.points[lv[(k + nv - 1) % nv]]),
+                                                  to_point_2d(domain.points[input]),
+                                                  to_point_2d(domain.points[lv[(k + 1) % nv]]));
+    return id;
+  }
+
+  std::size_t point_on_edge(std::size_t l, std::size_t edge, double t)
+  {
+    const auto& lv = loops.loops[l].vertices;
+    const Point_2& a = domain.points[lv[edge]];
+    const Point_2& b = domain.points[lv[(edge + 1) % lv.size()]];
+    mesh.points.push_back(point_between(a, b, t));
+    xy.push_back(to_point_2d(mesh.points.back()));
+    slides[mesh.points.size() - 1] = Slide{ l, edge, { none, none } };
+    return mesh.points.size() - 1;
+  }
+
+  // a + t (b - a), on the line through a and b exactly under exact constructions
+  Point_2 point_between(const Point_2& a, const Point_2& b, double t) const
+  {
+    auto x = traits.compute_x_2_object();
+    auto y = traits.compute_y_2_object();
+    const FT ft(t);
+    return traits.construct_point_2_object()(x(a) + ft * (x(b) - x(a)), y(a) + ft * (y(b) - y(a)));
+  }
+
+  // a quad's cost, its largest deviation from 90 degrees (quad_badness()), judged without the
+  // angle an input corner forces
+  double quad_cost(const Quad& q) const
+  {
+    std::array<Point_2d, 4> P;
+    for(int k = 0; k < 4; ++k) P[k] = xy[q[k]];
+    double b = quad_badness(P);
+    // an angle an input corner alpha forces is not the strip's fault: the quad is judged by its
+    // other three, which fit in [45, 135] (they sum to 360 - alpha; with [alpha, 180 - alpha]
+    // costing what [45, 135] costs elsewhere, as the paper allows, bird's 11.5-degree tip kept
+    // 138.8). Beyond 45 their deviation counts in full from a 6-degree corner up (there they
+    // fit: the mirrored bird's tip kept 137.4 while it counted less) and less below, as it
+    // did: on a needle's tip they cannot all fit.
+    if(b < 1000.0)
+      for(int k = 0; k < 4; ++k)
+        if(input_corner_angle(q[k]) < 45.0 // cheap test first: the cost runs in inner loops
+           && forced_angle(q[k], corner_angle_degrees(P[(k + 3) % 4], P[k], P[(k + 1) % 4]))) {
+          const double scale = input_corner_angle(q[k]) >= 6.0 ? 1.0 : 45.0 / (90.0 - input_corner_angle(q[k]));
+          b = 0;
+          for(int j = 0; j < 4; ++j)
+            if(j != k) {
+              const double d = std::abs(corner_angle_degrees(P[(j + 3) % 4], P[j], P[(j + 1) % 4]) - 90.0);
+              b = (std::max)(b, d <= 45.0 ? d : 45.0 + scale * (d - 45.0));
+            }
+          break;
+        }
+    return b;
+  }
+
+  // strictly convex and counter-clockwise by the kernel's predicate, and no corner nearly flat
+  // (the quality check rejects those)
+  bool is_valid_quad(const Quad& Q) const
+  {
+    auto orient = traits.orientation_2_object();
+    for(int c = 0; c < 4; ++c)
+      if(orient(mesh.points[Q[c]], mesh.points[Q[(c + 1) % 4]], mesh.points[Q[(c + 2) % 4]]) != CGAL::LEFT_TURN)
+        return false;
+    for(int c = 0; c < 4; ++c)
+      if(!(corner_scaled_jacobian(xy[Q[(c + 3) % 4]], xy[Q[c]], xy[Q[(c + 1) % 4]]) > 1e-9))
+        return false;
+    return true;
+  }
+
+  /// Drops the points no quad uses (boundary nodes the pairing took out again); returns the
+  /// new index of every old point (`none` for a dropped one).
+  std::vector<std::size_t> remove_unused_points()
+  {
+    std::vector<std::size_t> index(mesh.points.size(), none);
+    for(const Quad& q : mesh.quads)
+      for(std::size_t v : q) index[v] = 0;
+    std::size_t next = 0;
+    for(std::size_t v = 0; v < index.size(); ++v)
+      if(index[v] == 0) {
+        mesh.points[next] = mesh.points[v];
+        index[v] = next++;
+      }
+    mesh.points.resize(next);
+    for(Quad& q : mesh.quads)
+      for(std::size_t& v : q) v = index[v];
+    return index;
+  }
+
+  // `targets`: for each quad at v, where v would make it a parallelogram (the corners beside v
+  // plus one side); returns the mean of those corners, v's neighbours (a Laplacian step)
+  Point_2d parallelogram_targets(std::size_t v, const Vertex_quads& quads_at, std::vector<Point_2d>& targets) const
+  {
+    targets.clear();
+    Point_2d lap{0, 0};
+    for(std::size_t q : quads_at[v]) {
+      const Quad& Q = mesh.quads[q];
+      const int c = corner_of(Q, v);
+      const Point_2d& prev = xy[Q[(c + 3) % 4]];
+      const Point_2d& next = xy[Q[(c + 1) % 4]];
+      const Point_2d& opp = xy[Q[(c + 2) % 4]];
+      targets.push_back(Point_2d{prev.x + next.x - opp.x, prev.y + next.y - opp.y});
+      lap.x += prev.x + next.x; lap.y += prev.y + next.y;
+    }
+    const int corners = 2 * int(quads_at[v].size());
+    lap.x /= corners; lap.y /= corners;
+    return lap;
+  }
+
+  Mesh& mesh;
+  std::vector<double> local_size; // per core point: the side of its largest quadtree cell
+  const Domain_2<K>& domain;
+  const Domain_loops_2<K>& loops;
+  K traits;
+  std::unique_ptr<Loop_locator> locator;
+  // the quads at each vertex from match_loops() to apply_boundary_templates(), which add none
+  std::unique_ptr<Vertex_quads> quads_at;
+  std::vector<Point_2d> xy;
+  std::vector<Point_2d> cleared_xy; // xy before apply_boundary_templates(), until apply_connectivity_templates()
+  std::vector<std::vector<std::size_t>> cycles;
+  std::vector<std::size_t> cycle_loop;
+  std::vector<std::vector<Point_2d>> first_points; // per cycle: its first buffer points (buffer1 on)
+  std::vector<std::size_t> first_base; // per cycle: the mesh index of its first buffer point
+  std::vector<std::size_t> first_core; // core vertex of each first buffer point
+  std::unordered_map<std::size_t, std::size_t> input_vertex;
+  std::vector<double> corner_angle; // per mesh point: its input corner's angle, or NaN
+  std::unordered_map<std::size_t, Slide> slides;
+  std::vector<char> on_cycle_mark; // per core point
+  std::vector<char> repaired_mark; // per point
+  std::vector<char> fixed_mark;    // per core point: a domain's isolated point, which never moves
+  std::vector<char> shaped_mark;   // per core point: an interior one the templates moved
+  bool first_built = false;
+  std::size_t core_points = 0;
+  // the first quad of the first buffer layer and of the second (the core's come before)
+  std::array<std::size_t, 2> layer_begin{ { std::size_t(-1), std::size_t(-1) } };
+  double feature_angle = 20.0;  // turning (degrees) that makes a loop vertex a corner
+  double chord_tolerance = 0;   // how far the mesh boundary may leave the input's
+  Buffer_report report;
+  Refinement_requests requests;
+};
+
+} // namespace internal
+} // namespace Quad_mesher_2
+} // namespace CGAL
+
+#endif // CGAL_QUAD_MESHER_2_INTERNAL_BUFFER_ZONE_H

@@ -1,0 +1,920 @@
+// Copyright (c) 2026 Quad_mesher_2 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Quad_mesher_2 developers
+//
+// Paper §4.6, the second buffer layer: F_i is projected onto its boundary loop; the projections,
+// together with the loop's vertices (those turning by less than 20 degrees may be left out
+// within the chord tolerance), form the boundary chain G. The strip between the F loop and
+// G is cut into triangles, each with one F edge or one G edge, and consecutive triangles
+// are paired into quads: F/G pairs are the paper's projection quads, G/G pairs fan around
+// an F point (the paper's corner quad P-N-M-L of Fig. 8(b)), F/F pairs around a reflex
+// corner fan at the corner (Fig. 8(d)); a corner over 225 degrees keeps three F points on
+// its node, so that its fan has three quads (four over 270 degrees where three left it a
+// fan of two: see may_take_four_fan_points()). Where the F edges meet the G edges and how the
+// triangles pair is chosen by dynamic programming around each loop, minimising the sum of
+// the quads' squared deviations from 90 degrees, with a heavy penalty outside [45, 135] and
+// a prohibitive one for invalid quads. Each gap may also take one more chain node (the
+// middle of its longest edge): the pairing decides where, which is how an odd triangle
+// count is made even and how a long ladder switches between its two phases (a ladder can
+// only switch at a gap with an even number of G edges; without one it shears end to end).
+
+#ifndef CGAL_QUAD_MESHER_2_INTERNAL_SECOND_BUFFER_LAYER_H
+#define CGAL_QUAD_MESHER_2_INTERNAL_SECOND_BUFFER_LAYER_H
+
+#include <CGAL/Quad_mesher_2/internal/buffer_zone.h>
+#include <CGAL/Quad_mesher_2/internal/sharp_corner_fans.h>
+#include <CGAL/Quad_mesher_2/internal/strip_pairing.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <iterator>
+#include <limits>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Quad_mesher_2 {
+namespace internal {
+
+/// The second buffer layer's strip of one core cycle c: from its first buffer points F to the
+/// boundary chain G on its loop (see the file comment).
+template <class K>
+class Buffer_strip : Buffer_tolerances
+{
+  typedef typename K::Point_2 Point_2;
+  typedef std::array<std::size_t, 4> Quad;
+
+  // the first buffer points' projections onto the loop, by F point (`snap`: the loop vertex
+  // it snapped to, `hit`: the point) and by position r from the strip's start (`P`: its
+  // unwrapped arclength, `share`: the earlier point whose node it shares, `spread`: it was
+  // spread around a shared node)
+  struct Projection
+  {
+    std::vector<double> P;
+    std::vector<std::size_t> snap, share;
+    std::vector<Loop_locator::Hit> hit;
+    std::vector<bool> spread;
+  };
+  // a candidate node of the boundary chain: a loop vertex or an F point's projection (its owner)
+  struct Node { double param; std::size_t vertex; std::size_t owner; Point_2d xy; bool keep; };
+  // the strip as the pairing sees it: F points' mesh ids, the chain's mesh ids and arclengths,
+  // and the first chain node of each gap
+  struct Strip_nodes
+  {
+    std::vector<std::size_t> fid, gid, g;
+    std::vector<double> gparam;
+  };
+  struct Strip_plan { bool ok = false; Strip_result best; std::vector<std::size_t> gid; };
+
+public:
+  Buffer_strip(Buffer_zone<K>& zone, std::size_t cycle)
+    : m_zone(zone), m_fans(zone), c(cycle), l(zone.cycle_loop[cycle]), n(zone.cycles[cycle].size()),
+      nv(zone.locator->loop(l).size()), L(zone.locator->length(l)), cyc(zone.cycles[cycle]),
+      F(zone.first_points[cycle]), loop_xy(zone.locator->loop(l))
+  {}
+
+  // the strip of the cycle: see the file comment
+  void build()
+  {
+    project_first_points();
+    give_wide_corners_a_projection();
+    split_obtuse_corners();
+    if(!unwrap_along_loop()) return;
+    const Strip_plan plan = best_plan();
+    m_cost_cache.clear();
+    add_plan(plan);
+  }
+
+private:
+  // Projections of the first buffer points; those within a third of the layer's thickness
+  // of a loop vertex (along the loop) snap to it.
+  void project_first_points()
+  {
+    std::vector<Loop_locator::Hit>& hit = m_start.hit;
+    std::vector<double>& raw = m_raw;
+    std::vector<std::size_t>& snap = m_start.snap;
+    hit.resize(n);
+    raw.resize(n);
+    snap.assign(n, none);
+    for(std::size_t i = 0; i < n; ++i) {
+      hit[i] = m_zone.locator->closest(F[i], 2 * m_zone.local_size[cyc[i]], l);
+      raw[i] = m_zone.locator->param(hit[i]);
+      const double reach = 0.35 * hit[i].dist;
+      double best = reach;
+      for(std::size_t k : { hit[i].edge, (hit[i].edge + 1) % nv }) {
+        const double d = std::abs(cyclic(m_zone.locator->arc(l, k) - raw[i]));
+        if(d <= best) { best = d; snap[i] = k; }
+      }
+    }
+  }
+
+  // A corner wider than 135 degrees (obtuse or reflex) takes the node of the projection
+  // nearest to it: a fan of boundary edges around an F point there would be flat or
+  // concave at the corner (paper §5: such corners get a first buffer point of their own).
+  void give_wide_corners_a_projection()
+  {
+    const std::vector<double>& raw = m_raw;
+    std::vector<std::size_t>& snap = m_start.snap;
+    std::vector<std::size_t> by_param(n);
+    for(std::size_t i = 0; i < n; ++i) by_param[i] = i;
+    std::sort(by_param.begin(), by_param.end(), [&](std::size_t x, std::size_t y) { return raw[x] < raw[y]; });
+    std::vector<bool> vertex_taken(nv, false);
+    for(std::size_t i = 0; i < n; ++i) if(snap[i] != none) vertex_taken[snap[i]] = true;
+    for(std::size_t k = 0; k < nv; ++k) {
+      if(vertex_taken[k] || !m_zone.is_feature(l, k)) continue;
+      if(m_zone.domain_angle(l, k) <= 135.0) continue;
+      const double a = m_zone.locator->arc(l, k);
+      auto it = std::lower_bound(by_param.begin(), by_param.end(), a,
+                                 [&](std::size_t x, double v) { return raw[x] < v; });
+      std::size_t best = none;
+      double bd = HUGE_VAL;
+      for(int side = 0; side < 2; ++side) {
+        const std::size_t pos = std::size_t(((it - by_param.begin()) - side + std::ptrdiff_t(n)) % std::ptrdiff_t(n));
+        const std::size_t i = by_param[pos];
+        const double d = std::abs(cyclic(raw[i] - a));
+        if(snap[i] == none && d < bd) { bd = d; best = i; }
+      }
+      if(best != none) { snap[best] = k; vertex_taken[k] = true; }
+    }
+  }
+
+  // An obtuse corner whose node took one projection alone is split by the edge to its F point
+  // (sharp_corner_fans.h).
+  void split_obtuse_corners()
+  {
+    const std::vector<std::size_t>& snap = m_start.snap;
+    for(std::size_t i = 0; i < n; ++i) {
+      const std::size_t k = snap[i];
+      if(k != none && m_zone.is_feature(l, k) && m_zone.domain_angle(l, k) > 135.0 && !m_fans.needs_fan_of_three(l, k)
+         && snap[(i + n - 1) % n] != k && snap[(i + 1) % n] != k)
+        m_fans.turn_to_bisector(c, i, k);
+    }
+  }
+
+  // The strip starts at the first projection on no loop vertex, F point rot(0) at arclength
+  // m_origin ("O"). Unwrapped positions along the loop from there; a step backwards would fold
+  // the strip, so such a point shares its predecessor's node instead. False (a failure) if
+  // they do not wind once around the loop.
+  bool unwrap_along_loop()
+  {
+    const std::vector<double>& raw = m_raw;
+    std::vector<std::size_t>& snap = m_start.snap;
+    std::size_t& s0 = m_s0;
+    s0 = 0;
+    while(s0 < n && snap[s0] != none) ++s0;
+    if(s0 == n) { s0 = 0; snap[0] = none; }
+    const double O = m_origin = raw[s0];
+    std::vector<double>& P = m_start.P;
+    std::vector<std::size_t>& share = m_start.share;
+    std::vector<double> W(n);
+    P.resize(n);
+    share.assign(n, none);
+    W[0] = P[0] = O;
+    for(std::size_t r = 1; r < n; ++r) {
+      const std::size_t i = rot(r);
+      W[r] = W[r - 1] + cyclic(raw[i] - raw[rot(r - 1)]);
+      P[r] = snap[i] != none ? W[r] + cyclic(m_zone.locator->arc(l, snap[i]) - raw[i]) : W[r];
+      if(P[r] <= P[r - 1]) {
+        P[r] = P[r - 1];
+        share[r] = share[r - 1] == none ? r - 1 : share[r - 1];
+      }
+    }
+    const double winding = (W[n - 1] + cyclic(raw[s0] - raw[rot(n - 1)]) - O) / L;
+    if(std::abs(winding - 1) > 1e-6) {
+      m_zone.request_all(c);
+      m_zone.report.failure = "the first buffer points do not project once around their loop";
+      return false;
+    }
+    // Points sharing a node (they project onto one reflex corner, or fold back) are spread
+    // along the loop around it, one node each, at about their own spacing: the strip stays a
+    // ladder and the pairing is left free to fan where it pays.
+    for(std::size_t r = 0; r < n; ++r) P[r] = (std::min)(P[r], O + L);
+    return true;
+  }
+
+  // The strip's pairing, with four F points on the node of each corner marked in `four_at`
+  // (see may_take_four_fan_points()) and three on the others' (from the unwrapped
+  // projections: a second plan starts afresh).
+  Strip_plan plan_with(const std::vector<bool>& four_at)
+  {
+    Projection proj = m_start;
+    proj.spread.assign(n, false);
+    gather_fan_points(proj, four_at);
+    spread_shared_nodes(proj, four_at);
+    std::vector<std::size_t> alias_vertex(n, none);
+    std::vector<Node> nodes = candidate_nodes(proj, alias_vertex);
+    keep_nodes_for_chord_tolerance(nodes);
+    // The vertices take over only where the pairing leaves a quad out of range, and the strip
+    // is paired again only if that lowers its cost: elsewhere the pairing may do better by
+    // switching phase at a vertex. First at the vertices a pairing leaves the middle of a fan
+    // out of range (the new pairing may leave one at another vertex: a few rounds); if fans
+    // remain, at every vertex at once (a coarse polygon's fans move round by round).
+    std::vector<bool> take_over_at(nv, false);
+    Strip_plan plan = plan_strip(proj, nodes, alias_vertex, take_over_at);
+    if(plan.ok && plan.best.cost.worst > 45.0 + angle_tolerance) {
+      Strip_plan latest = plan;
+      for(int round = 0; round < 4; ++round) {
+        bool more = false;
+        for(std::size_t k : fan_vertices(latest))
+          if(!take_over_at[k]) more = take_over_at[k] = true;
+        if(!more) break;
+        latest = plan_strip(proj, nodes, alias_vertex, take_over_at);
+        if(!latest.ok) break;
+        if(latest.best.cost < plan.best.cost) plan = latest;
+      }
+      if(!fan_vertices(plan).empty()) {
+        Strip_plan everywhere = plan_strip(proj, nodes, alias_vertex, std::vector<bool>(nv, true));
+        if(everywhere.ok && everywhere.best.cost < plan.best.cost) plan = std::move(everywhere);
+      }
+    }
+    return plan;
+  }
+
+  // A corner wider than 225 degrees needs three F points on its node for a fan of three
+  // quads (see needs_fan_of_three()), four where `four_at` asks it: where fewer project onto
+  // it, the nearest neighbours (free, on their own nodes) join them.
+  void gather_fan_points(Projection& proj, const std::vector<bool>& four_at)
+  {
+    std::vector<double>& P = proj.P;
+    std::vector<std::size_t>& snap = proj.snap;
+    for(std::size_t a = 1; a + 1 < n; ++a) {
+      const std::size_t k = snap[rot(a)];
+      if(k == none || P[a - 1] == P[a] || !m_fans.needs_fan_of_three(l, k)) continue;
+      std::size_t lo = a, hi = a;
+      while(hi + 1 < n && P[hi + 1] == P[a]) ++hi;
+      const Point_2d corner = loop_xy[k];
+      auto free_point = [&](std::size_t r) {
+        return r > 0 && r + 1 < n && snap[rot(r)] == none && P[r - 1] != P[r] && P[r + 1] != P[r];
+      };
+      while(hi - lo + 1 < (four_at[k] ? 4u : 3u)) {
+        const bool before = free_point(lo - 1), after = hi + 2 < n && free_point(hi + 1);
+        if(!before && !after) break;
+        const double db = before ? length_2d(minus_2d(F[rot(lo - 1)], corner)) : HUGE_VAL;
+        const double da = after ? length_2d(minus_2d(F[rot(hi + 1)], corner)) : HUGE_VAL;
+        const std::size_t r = db <= da ? --lo : ++hi;
+        P[r] = P[a];
+        snap[rot(r)] = k;
+      }
+      a = hi;
+    }
+  }
+
+  // Points sharing a node are spread along the loop around it, one node each, at about their
+  // own spacing, but for a fan's F points (keep_fan_points()), which stay on their corner's.
+  void spread_shared_nodes(Projection& proj, const std::vector<bool>& four_at)
+  {
+    std::vector<double>& P = proj.P;
+    std::vector<std::size_t>& snap = proj.snap;
+    std::vector<std::size_t>& share = proj.share;
+    std::vector<Loop_locator::Hit>& hit = proj.hit;
+    std::vector<bool>& spread = proj.spread;
+    const double O = m_origin;
+    for(std::size_t a = 0; a < n;) {
+      std::size_t b = a;
+      while(b + 1 < n && P[b + 1] == P[a]) ++b;
+      const bool at_end = P[a] >= O + L;
+      if(b == a && !at_end) { ++a; continue; }
+      const double p0 = P[a];
+      const double before = a == 0 ? p0 : P[a - 1];
+      const double after = b + 1 < n ? P[b + 1] : O + L;
+      // the anchor keeps the node; at the start it must stay first, at the end nothing may
+      // reach the start again
+      std::size_t anchor = a == 0 ? 0 : (at_end ? n : (a + b) / 2);
+        // Around a corner wider than 225 degrees three of them (or four: `four_at`) stay on
+        // the corner's node: a fan of three (paper Fig. 8(d)).
+        std::size_t last_kept = anchor;
+        if(!at_end && snap[rot(a)] != none && m_fans.needs_fan_of_three(l, snap[rot(a)]))
+          keep_fan_points(proj, a, b, four_at, anchor, last_kept);
+      auto spacing = [&](std::size_t r1, std::size_t r2) {
+        return length_2d(minus_2d(F[rot(r1)], F[rot(r2)]));
+      };
+      if(anchor > a) { // a .. anchor-1 go before p0
+        const std::size_t cnt = (anchor == n ? b + 1 : anchor) - a;
+        const double room = (p0 - before) / double(cnt + 1);
+        double s = p0;
+        for(std::size_t r = (anchor == n ? b + 1 : anchor); r-- > a;) {
+          s -= (std::min)(room, spacing(r, r + 1 < n ? r + 1 : r));
+          P[r] = s;
+          snap[rot(r)] = none;
+          hit[rot(r)] = m_zone.locator->point_at_arclength(l, s);
+        }
+      }
+      if(anchor < n && b > last_kept) { // last_kept+1 .. b go after p0
+        const double room = (after - p0) / double(b - last_kept + 1);
+        double s = p0;
+        for(std::size_t r = last_kept + 1; r <= b; ++r) {
+          s += (std::min)(room, spacing(r, r - 1));
+          P[r] = s;
+          snap[rot(r)] = none;
+          hit[rot(r)] = m_zone.locator->point_at_arclength(l, s);
+        }
+      }
+      for(std::size_t r = a; r <= b; ++r) {
+        share[r] = r > anchor && r <= last_kept ? anchor : none;
+        spread[r] = true;
+      }
+      a = b + 1;
+    }
+  }
+
+  // Of the F points a .. b on the node of a corner wider than 225 degrees, the three (four
+  // where `four_at` asks) that stay there, first_kept (the new `anchor`) to `last_kept`. The
+  // pairing can make a node the apex of one F triangle per gap it bounds: two spread nodes
+  // leave the corner two quads, over 112.5 degrees each; three F points on it make a fan of
+  // three. A fan of three is opened (open_fan()).
+  void keep_fan_points(const Projection& proj, std::size_t a, std::size_t b, const std::vector<bool>& four_at,
+                       std::size_t& anchor, std::size_t& last_kept)
+  {
+    const std::vector<std::size_t>& snap = proj.snap;
+    const std::size_t k = snap[rot(a)], kept = four_at[k] ? 4 : 3;
+    std::size_t first_kept = a == 0 ? 0 : (std::max)(a, anchor - 1);
+    // a needle's F points wrap around its tip, so neither the bisector nor the fan's
+    // parallelogram below means much there (the 6-degree spike test: 168 degrees with them)
+    const bool needle = m_zone.domain_angle(l, k) > 340.0;
+    // of more, those whose middle lies nearest the corner's bisector
+    if(a != 0 && b - a + 1 > kept && !needle) {
+      const Point_2d C = loop_xy[k];
+      const Point_2d bis = right_bisector(loop_xy[(k + nv - 1) % nv], C, loop_xy[(k + 1) % nv]);
+      double best = HUGE_VAL;
+      for(std::size_t s = a; s + kept - 1 <= b; ++s) {
+        Point_2d mid = normalized_2d(minus_2d(F[rot(s + 1)], C));
+        if(kept == 4) {
+          const Point_2d other = normalized_2d(minus_2d(F[rot(s + 2)], C));
+          mid = normalized_2d(Point_2d{ mid.x + other.x, mid.y + other.y });
+        }
+        const double d = dot_2d(mid, bis); // -1 on the bisector
+        if(d < best) { best = d; first_kept = s; }
+      }
+    }
+    last_kept = (std::min)(b, first_kept + kept - 1);
+    anchor = first_kept;
+    if(last_kept == first_kept + 2 && !needle)
+      m_fans.open_fan(c, rot(first_kept), rot(first_kept + 1), rot(last_kept), loop_xy[k],
+               loop_xy[(k + nv - 1) % nv], loop_xy[(k + 1) % nv]);
+  }
+
+  // Candidate nodes, by parameter from O: loop vertices and the F points' own projections. A
+  // projection on a vertex (to rounding) is that vertex; a second one shares it
+  // (`alias_vertex`).
+  std::vector<Node> candidate_nodes(const Projection& proj, std::vector<std::size_t>& alias_vertex) const
+  {
+    const std::vector<double>& P = proj.P;
+    const std::vector<std::size_t>& snap = proj.snap;
+    const std::vector<std::size_t>& share = proj.share;
+    const std::vector<Loop_locator::Hit>& hit = proj.hit;
+    const double O = m_origin;
+    std::vector<Node> nodes;
+    std::vector<bool> snapped(nv, false);
+    for(std::size_t r = 0; r < n; ++r)
+      if(share[r] == none && snap[rot(r)] != none) snapped[snap[rot(r)]] = true;
+    for(std::size_t k = 0; k < nv; ++k) {
+      double s = std::fmod(m_zone.locator->arc(l, k) - O, L);
+      if(s < 0) s += L;
+      nodes.push_back(Node{ O + s, k, none, loop_xy[k], snapped[k] || m_zone.is_feature(l, k) });
+    }
+    for(std::size_t r = 0; r < n; ++r)
+      if(share[r] == none && snap[rot(r)] == none && P[r] < O + L * (1 - 1e-12))
+        nodes.push_back(Node{ P[r], none, r, hit[rot(r)].point, true });
+    std::stable_sort(nodes.begin(), nodes.end(), [](const Node& x, const Node& y) {
+      return x.param < y.param || (x.param == y.param && x.vertex != none && y.vertex == none);
+    });
+    {
+      const double tol = (std::max)(1e-9 * L, 1e-8 * m_zone.locator->diagonal()); // verify_mesh merges at 1e-9 of the diagonal
+      std::vector<Node> merged;
+      for(const Node& nd : nodes) {
+        if(!merged.empty() && nd.param - merged.back().param <= tol
+           && (nd.vertex == none) != (merged.back().vertex == none)) {
+          const bool back_is_vertex = merged.back().vertex != none;
+          Node vertex_node = back_is_vertex ? merged.back() : nd;
+          const std::size_t owner = back_is_vertex ? nd.owner : merged.back().owner;
+          if(vertex_node.owner == none) vertex_node.owner = owner;
+          else alias_vertex[owner] = vertex_node.vertex;
+          vertex_node.keep = true;
+          merged.back() = vertex_node;
+          continue;
+        }
+        merged.push_back(nd);
+      }
+      nodes = std::move(merged);
+    }
+    return nodes;
+  }
+
+  // Loop vertices that are no corners (they turn the boundary by less than the feature
+  // angle) and hold no node may be left out where the chord between the kept nodes around
+  // them stays within the tolerance (Douglas-Peucker): that keeps the strip a ladder.
+  void keep_nodes_for_chord_tolerance(std::vector<Node>& nodes) const
+  {
+    const std::size_t N = nodes.size();
+    std::vector<std::size_t> kept_at;
+    for(std::size_t k = 0; k < N; ++k) if(nodes[k].keep) kept_at.push_back(k);
+    if(kept_at.empty()) { nodes[0].keep = true; kept_at.push_back(0); }
+    std::vector<std::pair<std::size_t, std::size_t>> runs; // (a, b) kept, b after a cyclically
+    for(std::size_t j = 0; j < kept_at.size(); ++j)
+      runs.emplace_back(kept_at[j], kept_at[(j + 1) % kept_at.size()]);
+    while(!runs.empty()) {
+      auto [a, b] = runs.back();
+      runs.pop_back();
+      const std::size_t len = (b + N - a) % N == 0 ? N : (b + N - a) % N;
+      const Point_2d A = nodes[a].xy, B = nodes[b].xy;
+      const double chord = length_2d(minus_2d(B, A));
+      const double tol = m_zone.chord_tolerance;
+      double worst = -1;
+      std::size_t at = none;
+      for(std::size_t j = 1; j < len; ++j) {
+        const std::size_t k = (a + j) % N;
+        const double d = point_segment_distance(nodes[k].xy, A, B);
+        if(d > worst) { worst = d; at = k; }
+      }
+      if(at == none) continue;
+      if(worst > tol || chord == 0) {
+        nodes[at].keep = true;
+        runs.emplace_back(a, at);
+        runs.emplace_back(at, b);
+      }
+    }
+  }
+
+  // A kept loop vertex wider than 135 degrees that no F point projects onto may become the
+  // middle of a fan of boundary edges, a quad with the vertex's own angle: a coarse polygon's
+  // vertices, kept for the chord tolerance and turning by less than the feature angle, are
+  // about as many as the F points (a 24-gon of radius 1 had 8 quads at 165 degrees). Such a
+  // vertex (of those marked in `at`) takes over the node of the nearer projection beside it
+  // in the chain; the first node stays the first F point's, and those spread around a corner
+  // stay its fan's. The chord that then spans the projection's place must keep the nodes
+  // under it within the tolerance.
+  void take_over_projection_nodes(const Projection& proj, std::vector<Node>& candidates, std::vector<std::size_t>& alias,
+                                  const std::vector<bool>& at) const
+  {
+    const std::vector<bool>& spread = proj.spread;
+    const std::size_t N = candidates.size();
+    std::vector<std::size_t> kept;
+    for(std::size_t k = 0; k < N; ++k)
+      if(candidates[k].keep) kept.push_back(k);
+    const std::size_t nk = kept.size();
+    // the nearest node kept before (step N - 1) or after (step 1) candidate k
+    auto kept_beside = [&](std::size_t k, std::size_t step) {
+      do k = (k + step) % N; while(!candidates[k].keep);
+      return k;
+    };
+    auto chord_within_tolerance_without = [&](std::size_t k) {
+      const std::size_t a = kept_beside(k, N - 1), b = kept_beside(k, 1);
+      for(std::size_t i = (a + 1) % N; i != b; i = (i + 1) % N)
+        if(point_segment_distance(candidates[i].xy, candidates[a].xy, candidates[b].xy) > m_zone.chord_tolerance)
+          return false;
+      return true;
+    };
+    for(std::size_t j = 0; j < nk; ++j) {
+      Node& v = candidates[kept[j]];
+      if(v.vertex == none || !at[v.vertex] || v.owner != none || m_zone.domain_angle(l, v.vertex) <= 135.0) continue;
+      std::size_t take = none;
+      double nearest = HUGE_VAL;
+      for(std::size_t side : { (j + nk - 1) % nk, (j + 1) % nk }) {
+        const Node& p = candidates[kept[side]];
+        if(!p.keep || p.vertex != none || p.owner == none || p.owner == 0 || spread[p.owner]) continue;
+        const double d = std::abs(cyclic(p.param - v.param));
+        if(d < nearest && chord_within_tolerance_without(kept[side])) { nearest = d; take = kept[side]; }
+      }
+      if(take == none) continue;
+      v.owner = candidates[take].owner;
+      alias[v.owner] = v.vertex;
+      candidates[take].keep = false;
+    }
+  }
+
+  // The pairing of the strip from the candidate nodes (copies: a second plan starts afresh),
+  // the vertices marked in `take_over_at` taking over projection nodes.
+  Strip_plan plan_strip(const Projection& proj, std::vector<Node> nodes, std::vector<std::size_t> alias_vertex,
+                        const std::vector<bool>& take_over_at)
+  {
+    const std::vector<double>& P = proj.P;
+    const std::vector<std::size_t>& snap = proj.snap;
+    const std::vector<std::size_t>& share = proj.share;
+    const std::vector<Loop_locator::Hit>& hit = proj.hit;
+    const double O = m_origin;
+    Strip_nodes strip;
+    std::vector<std::size_t>& gid = strip.gid;
+    std::vector<std::size_t>& g = strip.g;
+    std::vector<std::size_t>& fid = strip.fid;
+    std::vector<double>& gparam = strip.gparam;
+    Strip_plan plan;
+    take_over_projection_nodes(proj, nodes, alias_vertex, take_over_at);
+    std::vector<Node> chain;
+    std::vector<std::size_t> chain_of_node(nodes.size(), none);
+    for(std::size_t k = 0; k < nodes.size(); ++k)
+      if(nodes[k].keep) { chain_of_node[k] = chain.size(); chain.push_back(nodes[k]); }
+    const std::size_t M0 = chain.size();
+    gid.resize(M0);
+    for(std::size_t k = 0; k < M0; ++k)
+      gid[k] = chain[k].vertex != none ? m_zone.input_vertex_point(l, chain[k].vertex)
+                                       : m_zone.point_on_edge(l, hit[rot(chain[k].owner)].edge, hit[rot(chain[k].owner)].t);
+    std::vector<std::size_t> node_of_vertex(nv, none), node_of_owner(n, none);
+    for(std::size_t k = 0; k < M0; ++k) {
+      if(chain[k].vertex != none) node_of_vertex[chain[k].vertex] = k;
+      if(chain[k].owner != none) node_of_owner[chain[k].owner] = k;
+    }
+    g.resize(n);
+    for(std::size_t r = 0; r < n; ++r) {
+      if(share[r] != none) { g[r] = g[share[r]]; continue; }
+      if(P[r] >= O + L * (1 - 1e-12)) { g[r] = M0; continue; } // projects past the start
+      g[r] = snap[rot(r)] != none ? node_of_vertex[snap[rot(r)]]
+             : alias_vertex[r] != none ? node_of_vertex[alias_vertex[r]] : node_of_owner[r];
+      if(g[r] == none) g[r] = r > 0 ? g[r - 1] : 0;
+      if(r > 0 && g[r] < g[r - 1]) g[r] = g[r - 1];
+    }
+    if(g[0] != 0)
+      return plan; // not ok: the chain is out of order
+
+    const std::size_t fbase = m_zone.first_base[c];
+    fid.resize(n);
+    for(std::size_t r = 0; r < n; ++r) fid[r] = fbase + rot(r);
+
+    gparam.resize(gid.size());
+    for(std::size_t k = 0; k < gid.size(); ++k) gparam[k] = chain[k].param;
+    Strip_result best = pair_strip_nodes(strip);
+    take_out_flat_fans(strip, best);
+    plan.ok = true;
+    plan.best = std::move(best);
+    plan.gid = std::move(gid);
+    return plan;
+  }
+
+    // n F edges and M G edges make n + M triangles, paired into quads. Every gap may take one
+    // more chain node, in the middle of its longest edge (on the loop there, or on a left-out
+    // loop vertex near it): the pairing decides where. It switches a ladder of quads between
+    // its two phases, and makes an odd triangle count even, where that costs least.
+  Strip_result pair_strip_nodes(Strip_nodes& strip)
+  {
+    std::vector<std::size_t>& gid = strip.gid;
+    std::vector<std::size_t>& g = strip.g;
+    const std::vector<std::size_t>& fid = strip.fid;
+    std::vector<double>& gparam = strip.gparam;
+    const std::size_t M0 = gid.size();
+    std::vector<Extra_node> extra(n);
+    struct Site { std::size_t vertex; double param; };
+    std::vector<Site> sites(n);
+    const std::size_t first_candidate = m_zone.xy.size();
+    for(std::size_t r = 0; r < n; ++r) {
+      const std::size_t g0 = g[r], k = (r + 1 < n ? g[r + 1] : M0) - g0;
+      if(g0 >= M0 || k == 0) continue;
+      std::size_t e = 0;
+      double longest = -1;
+      for(std::size_t j = 0; j < k; ++j) {
+        const double len = length_2d(minus_2d(m_zone.xy[gid[(g0 + j + 1) % M0]], m_zone.xy[gid[g0 + j]]));
+        if(len > longest) { longest = len; e = j; }
+      }
+      const double a = gparam[g0 + e], b = g0 + e + 1 < M0 ? gparam[g0 + e + 1] : gparam[0] + L;
+      const double mid = 0.5 * (a + b);
+      const Loop_locator::Hit h = m_zone.locator->point_at_arclength(l, mid);
+      // a left-out loop vertex near the middle keeps the input's own point
+      Site site{ none, mid };
+      Point_2d xy = h.point;
+      double nearest = 0.25 * (b - a);
+      for(std::size_t v : { h.edge, (h.edge + 1) % nv }) {
+        const double sv = mid + cyclic(m_zone.locator->arc(l, v) - mid);
+        if(std::abs(sv - mid) < nearest) {
+          nearest = std::abs(sv - mid);
+          site = Site{ v, sv };
+          xy = loop_xy[v];
+        }
+      }
+      sites[r] = site;
+      extra[r] = Extra_node{ e, m_zone.xy.size() };
+      if(site.vertex != none) { // the pairing costs its angle as the input vertex it is
+        m_zone.corner_angle.resize(m_zone.xy.size() + 1, std::numeric_limits<double>::quiet_NaN());
+        m_zone.corner_angle[m_zone.xy.size()] = m_zone.domain_angle(l, site.vertex);
+      }
+      m_zone.xy.push_back(xy);
+    }
+    Strip_result res = pair_strip(fid, gid, g, extra, [this](const Quad& q) { return strip_cost(q); });
+    // the candidates had ids of their own past the mesh's points (the cost cache knows quads
+    // by their ids); the chosen ones become mesh points
+    m_zone.xy.resize(first_candidate);
+    m_zone.corner_angle.resize((std::min)(m_zone.corner_angle.size(), first_candidate));
+    for(auto it = m_cost_cache.begin(); it != m_cost_cache.end();) {
+      bool candidate = false;
+      for(std::size_t v : it->first) candidate = candidate || v >= first_candidate;
+      it = candidate ? m_cost_cache.erase(it) : std::next(it);
+    }
+    std::vector<std::size_t> real_id(n, none); // by candidate id - first_candidate
+    for(std::size_t r = n; r-- > 0;) { // from the back: earlier chain positions stay valid
+      if(!res.inserted[r]) continue;
+      std::size_t id;
+      if(sites[r].vertex != none) {
+        id = m_zone.input_vertex_point(l, sites[r].vertex);
+      } else {
+        const Loop_locator::Hit h = m_zone.locator->point_at_arclength(l, sites[r].param);
+        id = m_zone.point_on_edge(l, h.edge, h.t);
+      }
+      real_id[extra[r].id - first_candidate] = id;
+      const std::size_t after = g[r] + extra[r].edge;
+      gid.insert(gid.begin() + std::ptrdiff_t(after + 1), id);
+      gparam.insert(gparam.begin() + std::ptrdiff_t(after + 1), sites[r].param);
+      for(auto& x : g) if(x > after) ++x;
+    }
+    for(Quad& q : res.quads)
+      for(std::size_t& v : q)
+        if(v >= first_candidate && v - first_candidate < real_id.size()) v = real_id[v - first_candidate];
+    return res;
+  }
+
+  // A fan of boundary edges that is flat (its middle node is no input vertex and lies on a
+  // straight piece of the boundary) cannot be made a quad: such a node is taken out and the
+  // strip paired again.
+  void take_out_flat_fans(Strip_nodes& strip, Strip_result& best)
+  {
+    std::vector<std::size_t>& gid = strip.gid;
+    std::vector<std::size_t>& g = strip.g;
+    std::vector<double>& gparam = strip.gparam;
+    for(int attempt = 0; attempt < 8 && best.cost.sum >= 1e12; ++attempt) {
+      // a chain node that may be left out: not the first, not an input vertex
+      auto removable = [&](std::size_t k) { return k != 0 && !m_zone.is_input_vertex(gid[k]); };
+      std::vector<std::size_t> removed;
+      for(const Quad& q : best.quads) {
+        std::size_t remove = none;
+        if(cost(q) < 1000.0) continue;
+        std::vector<std::size_t> pos;
+        for(std::size_t v : q) {
+          auto it = std::find(gid.begin(), gid.end(), v);
+          if(it != gid.end()) pos.push_back(std::size_t(it - gid.begin()));
+        }
+        if(pos.size() != 3) continue;
+        const std::size_t M0 = gid.size();
+        // the middle node if it may go, else an end of the fan: with one node fewer nearby the
+        // pairing can put the fan elsewhere
+        for(std::size_t mid : pos) {
+          const bool has_prev = std::find(pos.begin(), pos.end(), (mid + M0 - 1) % M0) != pos.end();
+          const bool has_next = std::find(pos.begin(), pos.end(), (mid + 1) % M0) != pos.end();
+          if(!has_prev || !has_next) continue;
+          for(std::size_t k : { mid, (mid + M0 - 1) % M0, (mid + 1) % M0 })
+            if(remove == none && removable(k) && chord_within_tolerance(l, gid, gparam, k)) remove = k;
+        }
+        if(remove != none) removed.push_back(remove);
+      }
+      if(removed.empty()) break;
+      std::sort(removed.rbegin(), removed.rend());
+      removed.erase(std::unique(removed.begin(), removed.end()), removed.end());
+      auto erase_node = [&](std::size_t remove) {
+        gid.erase(gid.begin() + std::ptrdiff_t(remove));
+        gparam.erase(gparam.begin() + std::ptrdiff_t(remove));
+        for(auto& x : g) if(x >= remove) --x;
+      };
+      for(std::size_t remove : removed) // from the back: earlier positions stay valid
+        erase_node(remove);
+      // An odd triangle count would make the pairing put a node back, likely in the same
+      // gap and with it the flat fan: a neighbour of a removed node goes too, if it may.
+      if((n + gid.size()) % 2 != 0) {
+        const std::size_t M1 = gid.size();
+        std::size_t extra = none;
+        for(std::size_t j = 0; j < removed.size() && extra == none; ++j) {
+          // the removed node's successor now sits where it was (positions before it shifted)
+          const std::size_t at = (removed[j] - (removed.size() - 1 - j)) % M1;
+          for(std::size_t k : { at, (at + M1 - 1) % M1 })
+            if(extra == none && removable(k) && chord_within_tolerance(l, gid, gparam, k)) extra = k;
+        }
+        if(extra != none) erase_node(extra);
+      }
+      best = pair_strip_nodes(strip);
+    }
+  }
+
+  // the loop vertices at fans of boundary edges out of range in a pairing (a pairing may add
+  // input vertices to the mesh)
+  std::vector<std::size_t> fan_vertices(const Strip_plan& p) const
+  {
+    const std::unordered_map<std::size_t, std::size_t> loop_vertex_of_point = loop_vertices_by_point();
+    std::vector<std::size_t> fans;
+    for(const Quad& q : p.best.quads) {
+      const int k = fixed_angle_out_of_range(q);
+      auto it = k < 0 ? loop_vertex_of_point.end() : loop_vertex_of_point.find(q[std::size_t(k)]);
+      if(it != loop_vertex_of_point.end()) fans.push_back(it->second);
+    }
+    return fans;
+  }
+
+  // the loop vertex of each input vertex the mesh has, by its mesh point
+  std::unordered_map<std::size_t, std::size_t> loop_vertices_by_point() const
+  {
+    std::unordered_map<std::size_t, std::size_t> loop_vertex_of_point;
+    for(std::size_t k = 0; k < nv; ++k) {
+      auto it = m_zone.input_vertex.find(m_zone.loops.loops[l].vertices[k]);
+      if(it != m_zone.input_vertex.end()) loop_vertex_of_point[it->second] = k;
+    }
+    return loop_vertex_of_point;
+  }
+
+  // The mesh points of the strip's F points, which the fans move (open_fan()): a second plan
+  // starts from them as they were, and the chosen plan's stay.
+  std::vector<Point_2> f_points() const
+  {
+    const std::size_t fbase = m_zone.first_base[c];
+    return std::vector<Point_2>(m_zone.mesh.points.begin() + std::ptrdiff_t(fbase),
+                                m_zone.mesh.points.begin() + std::ptrdiff_t(fbase + n));
+  }
+
+  void restore_f_points(const std::vector<Point_2>& saved)
+  {
+    const std::size_t fbase = m_zone.first_base[c];
+    for(std::size_t i = 0; i < n; ++i) {
+      m_zone.mesh.points[fbase + i] = saved[i];
+      m_zone.first_points[c][i] = m_zone.xy[fbase + i] = to_point_2d(saved[i]);
+    }
+    m_cost_cache.clear(); // it knows quads by their points' ids
+  }
+
+  // The plan with three F points at each corner's fan, or with four where a corner over 270
+  // degrees kept a fan of two (its ladder's phase, see may_take_four_fan_points()) and four
+  // pair the strip better.
+  Strip_plan best_plan()
+  {
+    const std::vector<Point_2> f_start = f_points();
+    Strip_plan plan = plan_with(std::vector<bool>(nv, false));
+    if(plan.ok) {
+      const std::unordered_map<std::size_t, std::size_t> loop_vertex_of_point = loop_vertices_by_point();
+      std::vector<bool> four_at(nv, false);
+      bool any = false;
+      for(const Quad& q : plan.best.quads) {
+        const int k = wide_side_of_reflex_fan(q);
+        auto it = k < 0 ? loop_vertex_of_point.end() : loop_vertex_of_point.find(q[std::size_t(k)]);
+        if(it != loop_vertex_of_point.end() && m_fans.may_take_four_fan_points(l, it->second))
+          any = four_at[it->second] = true;
+      }
+      if(any) {
+        const std::vector<Point_2> f_three = f_points();
+        restore_f_points(f_start);
+        Strip_plan four = plan_with(four_at);
+        if(four.ok && four.best.cost < plan.best.cost) plan = std::move(four);
+        else restore_f_points(f_three);
+      }
+    }
+    return plan;
+  }
+
+  // the quads of the chosen plan, or a failure
+  void add_plan(const Strip_plan& plan)
+  {
+    if(!plan.ok) {
+      m_zone.request_all(c);
+      m_zone.report.failure = "the boundary chain of a buffer strip is out of order";
+      return;
+    }
+    const Strip_result& best = plan.best;
+    const std::vector<std::size_t>& gid = plan.gid;
+    if(best.cost.worst == HUGE_VAL) {
+      m_zone.request_all(c);
+      m_zone.report.failure = "no pairing of a buffer strip into quads";
+      return;
+    }
+    const std::size_t M = gid.size();
+    for(std::size_t k = 0; k < M; ++k)
+      if(m_zone.slides.count(gid[k]))
+        m_zone.slides[gid[k]].neighbors = { gid[(k + M - 1) % M], gid[(k + 1) % M] };
+    for(const Quad& q : best.quads) {
+      m_zone.add_quad(q);
+      ++m_zone.report.second_layer_quads;
+    }
+  }
+
+  // the F point at position r from the strip's start
+  std::size_t rot(std::size_t r) const { return (m_s0 + r) % n; }
+  // an arclength difference taken into (-L/2, L/2]
+  double cyclic(double d) const
+  {
+    d = std::fmod(d, L);
+    if(d > L / 2) d -= L;
+    if(d < -L / 2) d += L;
+    return d;
+  }
+
+  double cost(const Quad& q) const
+  {
+    if(q[0] == none) return 2000.0;
+    auto it = m_cost_cache.find(q);
+    if(it != m_cost_cache.end()) return it->second;
+    const double b = m_zone.quad_cost(q);
+    m_cost_cache.emplace(q, b);
+    return b;
+  }
+
+  // A quad's cost in the strip's pairing: an angle out of [45, 135] at a boundary node between
+  // two others (the middle of a fan of boundary edges) is the boundary's own angle there,
+  // which no later move changes (an input vertex stays; a point on an input edge only slides
+  // along it), unlike a quad sheared by its F points, which the optimizer straightens: it
+  // costs as much as a hundred degrees more (lake_superior_jigsaw kept a 135.9-degree corner
+  // whole, one quad spanning it, rather than shear a row; the mirrored guitar kept a chord
+  // node at 174.5 degrees beside a left-out vertex). So does a quad over 135 degrees on a side
+  // of a corner over 270 degrees (wide_side_of_reflex_fan()).
+  double strip_cost(const Quad& q) const
+  {
+    const double b = cost(q);
+    if(b <= 45.0 + angle_tolerance || b >= 1000.0) return b;
+    return fixed_angle_out_of_range(q) >= 0 || wide_side_of_reflex_fan(q) >= 0 ? b + 100.0 : b;
+  }
+
+  // the corner (0 to 3) of q at a boundary node between two others whose angle is out of
+  // [45, 135] and not forced, or -1
+  int fixed_angle_out_of_range(const Quad& q) const
+  {
+    for(int k = 0; k < 4; ++k) {
+      const std::size_t v = q[k], u = q[(k + 3) % 4], w = q[(k + 1) % 4];
+      if(!on_boundary_chain(v) || !on_boundary_chain(u) || !on_boundary_chain(w)) continue;
+      const double angle = corner_angle_degrees(m_zone.xy[u], m_zone.xy[v], m_zone.xy[w]);
+      if(std::abs(angle - 90.0) > 45.0 + angle_tolerance && !m_zone.forced_angle(v, angle)) return k;
+    }
+    return -1;
+  }
+
+  // the corner (0 to 3) of q with over 135 degrees at an input corner of 270 degrees or more
+  // (270 to rounding: a grid of square holes kept fans of 134.8 + 135.2 at theirs), between a
+  // boundary node and an F point, or -1: a side of a fan of two there, or of a fan of three
+  // with an F point off to one side. A fan of two at such a corner keeps over 135 degrees in one of its quads
+  // however its F point moves (the pairing took two quads of about 147 degrees at a 294-degree
+  // island tip over a fan of three whose middle F point, flat for now, the optimizer moves).
+  int wide_side_of_reflex_fan(const Quad& q) const
+  {
+    for(int k = 0; k < 4; ++k) {
+      const std::size_t v = q[k], u = q[(k + 3) % 4], w = q[(k + 1) % 4];
+      if(!(m_zone.input_corner_angle(v) > 270.0 - angle_tolerance) || on_boundary_chain(u) == on_boundary_chain(w)) continue;
+      if(corner_angle_degrees(m_zone.xy[u], m_zone.xy[v], m_zone.xy[w]) > 135.0 + angle_tolerance) return k;
+    }
+    return -1;
+  }
+
+  // an input vertex, a point on an input edge, or a gap's candidate extra node (an id past the
+  // mesh's points while the strip is paired)
+  bool on_boundary_chain(std::size_t v) const
+  {
+    return m_zone.is_input_vertex(v) || m_zone.slides.count(v) != 0 || v >= m_zone.mesh.points.size();
+  }
+
+  // whether the chord between the chain neighbours of node k stays within the tolerance of
+  // the loop between them (taking node k out must not pull the boundary away)
+  bool chord_within_tolerance(std::size_t l, const std::vector<std::size_t>& gid,
+                              const std::vector<double>& param, std::size_t k) const
+  {
+    const std::size_t M = gid.size();
+    const std::size_t a = (k + M - 1) % M, b = (k + 1) % M;
+    const Point_2d A = m_zone.xy[gid[a]], B = m_zone.xy[gid[b]];
+    const double L = m_zone.locator->length(l);
+    double s0 = param[a], s1 = b > a ? param[b] : param[b] + L;
+    const auto& v = m_zone.locator->loop(l);
+    for(std::size_t j = 0; j < v.size(); ++j) {
+      double s = m_zone.locator->arc(l, j);
+      while(s < s0) s += L;
+      if(s < s1 && point_segment_distance(v[j], A, B) > m_zone.chord_tolerance) return false;
+    }
+    return point_segment_distance(m_zone.xy[gid[k]], A, B) <= m_zone.chord_tolerance;
+  }
+
+  struct Quad_hash
+  {
+    std::size_t operator()(const Quad& q) const
+    {
+      std::size_t h = 0;
+      for(std::size_t v : q) h = h * 0x9E3779B97F4A7C15ull + v;
+      return h ^ (h >> 29);
+    }
+  };
+
+  Buffer_zone<K>& m_zone;
+  Sharp_corner_fans<K> m_fans;
+  // the cycle, its loop, the number of F points and of loop vertices, the loop's length
+  const std::size_t c, l, n, nv;
+  const double L;
+  const std::vector<std::size_t>& cyc;
+  const std::vector<Point_2d>& F;
+  const std::vector<Point_2d>& loop_xy;
+  std::vector<double> m_raw; // each F point's arclength along the loop
+  Projection m_start;        // the unwrapped projections every plan starts from
+  std::size_t m_s0 = 0;
+  double m_origin = 0;
+  // quad costs while the strip is paired (its points do not move meanwhile)
+  mutable std::unordered_map<Quad, double, Quad_hash> m_cost_cache;
+};
+
+/// Stage "buffer2" (paper §4.6) on one buffer zone: the strip of each cycle (Buffer_strip).
+template <class K>
+class Second_buffer_layer
+{
+public:
+  explicit Second_buffer_layer(Buffer_zone<K>& zone) : m_zone(zone) {}
+
+  void build_second_layer()
+  {
+    m_zone.layer_begin[1] = m_zone.mesh.quads.size();
+    for(std::size_t c = 0; c < m_zone.cycles.size(); ++c)
+      Buffer_strip<K>(m_zone, c).build();
+  }
+
+private:
+  Buffer_zone<K>& m_zone;
+};
+
+} // namespace internal
+} // namespace Quad_mesher_2
+} // namespace CGAL
+
+#endif // CGAL_QUAD_MESHER_2_INTERNAL_SECOND_BUFFER_LAYER_H

@@ -1,0 +1,190 @@
+// Copyright (c) 2026 Quad_mesher_2 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Quad_mesher_2 developers
+//
+// Paper §4.6, the pairing of the second buffer layer's strip: the strip between the first
+// buffer points F and the boundary chain G is cut into triangles, each with one F edge or one G
+// edge, and consecutive triangles are paired into quads by dynamic programming around the loop,
+// minimising a sum of the quads' costs. Each gap between two F points may also take one extra
+// chain node where the pairing wants it (an odd triangle count made even, a ladder of quads
+// switched between its two phases).
+
+#ifndef CGAL_QUAD_MESHER_2_INTERNAL_STRIP_PAIRING_H
+#define CGAL_QUAD_MESHER_2_INTERNAL_STRIP_PAIRING_H
+
+#include <CGAL/Quad_mesher_2/internal/buffer_tolerances.h>
+#include <CGAL/Quad_mesher_2/internal/mesh_adjacency.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Quad_mesher_2 {
+namespace internal {
+
+// Triangles of the strip, in order around the loop: an F edge with its apex on G, or a G
+// edge with its apex an F point. Vertices are mesh ids, counter-clockwise.
+typedef std::array<std::size_t, 3> Triangle;
+
+// the quad made of two triangles sharing an edge (Buffer_tolerances::none if they share Buffer_tolerances::none)
+inline Quad_vertices merge(const Triangle& A, const Triangle& B)
+{
+  for(int k = 0; k < 3; ++k) {
+    const std::size_t x = A[k], y = A[(k + 1) % 3];
+    for(int j = 0; j < 3; ++j)
+      if(B[j] == y && B[(j + 1) % 3] == x)
+        return Quad_vertices{ x, B[(j + 2) % 3], y, A[(k + 2) % 3] };
+  }
+  return Quad_vertices{ Buffer_tolerances::none, Buffer_tolerances::none, Buffer_tolerances::none, Buffer_tolerances::none };
+}
+
+// The strip's cost: the sum over its quads of the squared deviation from 90 degrees, plus a
+// heavy penalty beyond 45 (outside [45, 135]) and a prohibitive one for invalid quads. A sum,
+// not the worst quad: one poor quad at a corner beats a whole row of sheared ones.
+struct Cost
+{
+  double worst = HUGE_VAL, sum = HUGE_VAL;
+  bool operator<(const Cost& o) const { return sum < o.sum || (sum == o.sum && worst < o.worst); }
+  void add(double b)
+  {
+    worst = (std::max)(worst, b);
+    const double excess = (std::max)(0.0, b - 45.0);
+    sum += b >= 1000.0 ? 1e12 : b * b + 100.0 * excess * excess;
+  }
+};
+
+struct Strip_result
+{
+  Cost cost;
+  std::vector<Quad_vertices> quads;
+  std::vector<bool> inserted; // per gap: whether it took its extra node
+};
+
+// the extra chain node a gap may take: after its `edge`-th chain edge, mesh id `id`
+struct Extra_node
+{
+  std::size_t edge = Buffer_tolerances::none, id = Buffer_tolerances::none;
+};
+
+// Dynamic programming over the gaps of a strip. Gap r lies between F points r, r+1 (mesh
+// ids fid) and chain nodes g[r] .. g[r+1] (g[n] = M wraps to 0), plus its extra node if it
+// takes it; `mid` of its G triangles (apex F_r) come before its F triangle, the rest (apex
+// F_{r+1}) after. State: 0 = no triangle pending; 1 = the gap's F triangle is pending (it
+// came last); 2 = its last G triangle is; 3 = the same, that triangle's first node being
+// the gap's extra node. `strip_cost(quad)` is a quad's cost in the pairing.
+template <class Strip_cost>
+Strip_result pair_strip(const std::vector<std::size_t>& fid, const std::vector<std::size_t>& gid,
+                        const std::vector<std::size_t>& g, const std::vector<Extra_node>& extra,
+                        const Strip_cost& strip_cost)
+{
+  const std::size_t n = fid.size(), M = gid.size();
+  std::vector<std::size_t> k_of(n);
+  for(std::size_t r = 0; r + 1 < n; ++r) k_of[r] = g[r + 1] - g[r];
+  k_of[n - 1] = M - g[n - 1];
+  auto F = [&](std::size_t r) { return fid[r % n]; };
+  auto G = [&](std::size_t k) { return gid[k % M]; };
+  auto node = [&](std::size_t r, bool ins, std::size_t e) { // the e-th node of gap r
+    if(!ins || e <= extra[r].edge) return G(g[r] + e);
+    return e == extra[r].edge + 1 ? extra[r].id : G(g[r] + e - 1);
+  };
+  auto triangles = [&](std::size_t r, bool ins, std::size_t mid) {
+    std::vector<Triangle> t;
+    const std::size_t k = k_of[r] + (ins ? 1 : 0);
+    for(std::size_t e = 0; e < mid; ++e) t.push_back({ node(r, ins, e), node(r, ins, e + 1), F(r) });
+    t.push_back({ F(r), node(r, ins, mid), F(r + 1) });
+    for(std::size_t e = mid; e < k; ++e) t.push_back({ node(r, ins, e), node(r, ins, e + 1), F(r + 1) });
+    return t;
+  };
+  auto last_edge_extra = [&](std::size_t r) { return extra[r].edge != Buffer_tolerances::none && extra[r].edge + 1 == k_of[r]; };
+  auto pending = [&](std::size_t r, int state) {
+    const std::size_t end = g[r] + k_of[r];
+    if(state == 1) return Triangle{ F(r), G(end), F(r + 1) };
+    return Triangle{ state == 3 ? extra[r].id : G(end + M - 1), G(end), F(r + 1) };
+  };
+  struct Step { std::size_t mid; int state; bool ins; };
+  // A gap's ways to triangulate (with or without its extra node, the fan's middle) cost the
+  // same whatever state the cycle starts in: each is costed once, when first reached, and
+  // the runs from the four start states only add up.
+  struct Option
+  {
+    Option(std::size_t m, bool i, std::vector<Triangle> tr) : mid(m), ins(i), t(std::move(tr)) {}
+    std::size_t mid;
+    bool ins;
+    std::vector<Triangle> t;
+    bool paired[2] = { false, false }; // by whether a pending triangle comes in
+    std::vector<double> pair_costs[2];
+    int out[2] = { 0, 0 };
+    std::array<double, 4> with_pending = { { -1, -1, -1, -1 } }; // by incoming state
+  };
+  std::vector<std::vector<Option>> options(n);
+  for(std::size_t r = 0; r < n; ++r)
+    for(bool ins : { false, true }) {
+      if(ins && extra[r].edge == Buffer_tolerances::none) continue;
+      const std::size_t k = k_of[r] + (ins ? 1 : 0);
+      for(std::size_t mid = 0; mid <= k; ++mid) options[r].emplace_back(mid, ins, triangles(r, ins, mid));
+    }
+  Strip_result result;
+  std::vector<Step> best_steps;
+  int best_start = 0;
+  for(int start = 0; start < 4; ++start) {
+    if(start == 2 && k_of[n - 1] == 0) continue;
+    if(start == 3 && !last_edge_extra(n - 1)) continue;
+    std::vector<std::array<Cost, 4>> best(n + 1);
+    std::vector<std::array<Step, 4>> back(n + 1);
+    best[0][start] = Cost{ 0, 0 };
+    for(std::size_t r = 0; r < n; ++r)
+      for(int s = 0; s < 4; ++s) {
+        if(best[r][s].worst == HUGE_VAL) continue;
+        const int p = s != 0 ? 1 : 0;
+        for(Option& o : options[r]) {
+          const auto& t = o.t;
+          if(!o.paired[p]) {
+            std::size_t pos = std::size_t(p);
+            for(; pos + 1 < t.size(); pos += 2) o.pair_costs[p].push_back(strip_cost(merge(t[pos], t[pos + 1])));
+            const std::size_t k = k_of[r] + (o.ins ? 1 : 0);
+            o.out[p] = pos == t.size() ? 0 : o.mid == k ? 1 : (o.ins && last_edge_extra(r)) ? 3 : 2;
+            o.paired[p] = true;
+          }
+          Cost cst = best[r][s];
+          if(s != 0) {
+            if(o.with_pending[s] < 0) o.with_pending[s] = strip_cost(merge(pending(r == 0 ? n - 1 : r - 1, s), t[0]));
+            cst.add(o.with_pending[s]);
+          }
+          for(double c : o.pair_costs[p]) cst.add(c);
+          const int out = o.out[p];
+          if(cst < best[r + 1][out]) { best[r + 1][out] = cst; back[r + 1][out] = Step{ o.mid, s, o.ins }; }
+        }
+      }
+    if(best[n][start] < result.cost) {
+      result.cost = best[n][start];
+      best_start = start;
+      best_steps.assign(n, Step{});
+      int s = start;
+      for(std::size_t r = n; r > 0; --r) { best_steps[r - 1] = back[r][s]; s = back[r][s].state; }
+    }
+  }
+  if(result.cost.worst == HUGE_VAL) return result;
+  result.inserted.assign(n, false);
+  Triangle in = best_start == 0 ? Triangle{} : pending(n - 1, best_start);
+  bool has_in = best_start != 0;
+  for(std::size_t r = 0; r < n; ++r) {
+    result.inserted[r] = best_steps[r].ins;
+    const auto t = triangles(r, best_steps[r].ins, best_steps[r].mid);
+    std::size_t pos = 0;
+    if(has_in) { result.quads.push_back(merge(in, t[0])); pos = 1; }
+    for(; pos + 1 < t.size(); pos += 2) result.quads.push_back(merge(t[pos], t[pos + 1]));
+    has_in = pos < t.size();
+    if(has_in) in = t.back();
+  }
+  return result;
+}
+
+} // namespace internal
+} // namespace Quad_mesher_2
+} // namespace CGAL
+
+#endif // CGAL_QUAD_MESHER_2_INTERNAL_STRIP_PAIRING_H
