@@ -31,7 +31,11 @@ class Buffer_optimizer : Buffer_tolerances
   typedef std::array<std::size_t, 4> Quad;
 
 public:
-  explicit Buffer_optimizer(Buffer_zone<K>& zone) : m_zone(zone) {}
+  explicit Buffer_optimizer(Buffer_zone<K>& zone)
+    : m_zone(zone), m_quads_at(zone.mesh.quads, zone.mesh.points.size()),
+      m_min_edge2(square(min_edge_length(zone))), m_dirty(zone.mesh.points.size(), 1),
+      m_dirty_next(zone.mesh.points.size(), 0)
+  {}
 
   /// Local min-max angle optimisation of the buffer: the first buffer points move freely, the
   /// new boundary points slide along their input edge, the core's boundary vertices move too;
@@ -41,126 +45,177 @@ public:
   /// `fixed_points` (a domain's isolated points) never move.
   void optimize(const std::vector<std::size_t>& fixed_points, int passes = 12)
   {
-    const Vertex_quads quads_at(m_zone.mesh.quads, m_zone.mesh.points.size());
+    const std::vector<std::size_t> movable = movable_vertices();
+    run_passes(movable, passes);
+    const std::vector<std::size_t> repair = repair_vertices(fixed_points);
+    std::vector<Point_2d> before(repair.size());
+    for(std::size_t k = 0; k < repair.size(); ++k) before[k] = m_zone.xy[repair[k]];
+    if(!repair.empty()) {
+      std::vector<std::size_t> all = repair;
+      all.insert(all.end(), movable.begin(), movable.end());
+      // the first passes left every clean vertex where a try would leave it again: only the
+      // repair's own vertices join the dirty ones (same moves, far fewer tries)
+      for(std::size_t v : repair) m_dirty[v] = 1;
+      run_passes(all, passes);
+    }
+    write_back(movable);
+    keep_repair_if_valid(repair, before);
+  }
+
+private:
+  // (invalid quads around v, quads outside [45, 135] around it, the worst deviation from
+  // 90 degrees), compared in this order: no move may make a quad invalid. A move must lower
+  // the worst by more than rounding (1e-9 degrees is within it on small cells far from the
+  // origin): the same moves on a translated domain.
+  struct Local
+  {
+    int invalid = 0, out = 0;
+    double worst = 0;
+    bool operator<(const Local& o) const
+    {
+      if(invalid != o.invalid) return invalid < o.invalid;
+      if(out != o.out) return out < o.out;
+      return worst < o.worst - angle_tolerance;
+    }
+  };
+
+  static double square(double x) { return x * x; }
+
+  // The shortest edge a move may leave: above the whole-mesh check's merge distance (1e-9 of
+  // the diagonal), and well below the edges of the finest cells, so that a domain's smallest
+  // features keep room to move.
+  static double min_edge_length(const Buffer_zone<K>& zone)
+  {
+    double finest = HUGE_VAL;
+    for(double h : zone.local_size)
+      if(h > 0) finest = (std::min)(finest, h);
+    return (std::max)(2e-9 * zone.locator->diagonal(), (std::min)(1e-8 * zone.locator->diagonal(), finest / 4));
+  }
+
+  // the core's boundary vertices and the buffer's points but the input vertices
+  std::vector<std::size_t> movable_vertices() const
+  {
     std::vector<std::size_t> movable;
     for(const auto& cyc : m_zone.cycles)
       movable.insert(movable.end(), cyc.begin(), cyc.end());
     for(std::size_t v = m_zone.core_points; v < m_zone.mesh.points.size(); ++v)
       if(!m_zone.is_input_vertex(v))
         movable.push_back(v);
-    // (invalid quads around v, quads outside [45, 135] around it, the worst deviation from
-    // 90 degrees), compared in this order: no move may make a quad invalid. A move must lower
-    // the worst by more than rounding: 1e-9 degrees is within it on small cells far from the
-    // origin, where moves that gain nothing made a translated domain's mesh differ.
-    struct Local
-    {
-      int invalid = 0, out = 0;
-      double worst = 0;
-      bool operator<(const Local& o) const
-      {
-        if(invalid != o.invalid) return invalid < o.invalid;
-        if(out != o.out) return out < o.out;
-        return worst < o.worst - angle_tolerance;
+    return movable;
+  }
+
+  // The Local cost of the quads at v. With `bound`, the caller keeps the result only if it is
+  // below *bound: every quad only adds to the cost, so the sum stops as soon as it cannot be
+  // (same decisions, far fewer quads).
+  Local local_cost(std::size_t v, const Local* bound) const
+  {
+    Local r;
+    for(std::size_t q : m_quads_at[v]) {
+      const double b = m_zone.quad_cost(m_zone.mesh.quads[q]);
+      r.worst = (std::max)(r.worst, b);
+      if(b >= 1000.0) ++r.invalid;
+      else if(b > 45.0 + angle_tolerance) ++r.out;
+      const Quad& Q = m_zone.mesh.quads[q];
+      const int c = corner_of(Q, v);
+      // an edge collapsing to a point keeps the angles fine but merges two vertices: the
+      // whole-mesh check rejects vertices within 1e-9 of the diagonal
+      for(int side : { 1, 3 }) {
+        const Point_2d d = minus_2d(m_zone.xy[Q[(c + side) % 4]], m_zone.xy[v]);
+        if(dot_2d(d, d) <= m_min_edge2) ++r.invalid;
       }
-    };
-    // above the whole-mesh check's merge distance (1e-9 of the diagonal), and well below the
-    // edges of the finest cells, so that a domain's smallest features keep room to move
-    double finest = HUGE_VAL;
-    for(double h : m_zone.local_size)
-      if(h > 0) finest = (std::min)(finest, h);
-    const double min_edge = (std::max)(2e-9 * m_zone.locator->diagonal(),
-                                       (std::min)(1e-8 * m_zone.locator->diagonal(), finest / 4));
-    const double min_edge2 = min_edge * min_edge;
-    // With `bound`, the caller keeps the result only if it is below *bound: every quad only adds
-    // to the cost, so the sum stops as soon as it cannot be (same decisions, far fewer quads).
-    auto local_cost = [&](std::size_t v, const Local* bound) {
-      Local r;
-      for(std::size_t q : quads_at[v]) {
-        const double b = m_zone.quad_cost(m_zone.mesh.quads[q]);
-        r.worst = (std::max)(r.worst, b);
-        if(b >= 1000.0) ++r.invalid;
-        else if(b > 45.0 + angle_tolerance) ++r.out;
-        const Quad& Q = m_zone.mesh.quads[q];
-        const int c = corner_of(Q, v);
-        // an edge collapsing to a point keeps the angles fine but merges two vertices: the
-        // whole-mesh check rejects vertices within 1e-9 of the diagonal
-        for(int side : { 1, 3 }) {
-          const Point_2d d = minus_2d(m_zone.xy[Q[(c + side) % 4]], m_zone.xy[v]);
-          if(dot_2d(d, d) <= min_edge2) ++r.invalid;
+      if(bound != nullptr && !(r < *bound)) return r;
+    }
+    if(folded_at(v)) r.invalid += 1 << 20;
+    return r;
+  }
+
+  // whether the quads at v fold over each other: their angles at v do not sum to 360 degrees
+  // (180 at a point sliding on the boundary; the core's boundary vertices are not checked)
+  bool folded_at(std::size_t v) const
+  {
+    const double expected = m_zone.slides.count(v) ? 180.0 : (m_zone.is_core_boundary(v) ? -1 : 360.0);
+    if(expected < 0) return false;
+    double angle_sum = 0;
+    for(std::size_t q : m_quads_at[v]) {
+      const Quad& Q = m_zone.mesh.quads[q];
+      const int c = corner_of(Q, v);
+      angle_sum += corner_angle_degrees(m_zone.xy[Q[(c + 3) % 4]], m_zone.xy[v], m_zone.xy[Q[(c + 1) % 4]]);
+    }
+    return std::abs(angle_sum - expected) > 1e-6;
+  }
+
+  // Up to `passes` passes over `vertices`, each moving every dirty one to its best target. A
+  // vertex whose quads have not changed since it was last tried would not move: only vertices
+  // sharing a quad with a moved one are tried again (same result, far fewer tries).
+  void run_passes(const std::vector<std::size_t>& vertices, int passes)
+  {
+    for(int pass = 0; pass < passes; ++pass) {
+      bool improved = false;
+      for(std::size_t v : vertices)
+        if(m_dirty[v] && try_move(v)) {
+          improved = true;
+          for(std::size_t q : m_quads_at[v])
+            for(std::size_t w : m_zone.mesh.quads[q])
+              m_dirty[w] = m_dirty_next[w] = 1;
         }
-        if(bound != nullptr && !(r < *bound)) return r;
-      }
-      const double expected = m_zone.slides.count(v) ? 180.0 : (m_zone.is_core_boundary(v) ? -1 : 360.0);
-      if(expected > 0) {
-        double angle_sum = 0;
-        for(std::size_t q : quads_at[v]) {
-          const Quad& Q = m_zone.mesh.quads[q];
-          const int c = corner_of(Q, v);
-          angle_sum += corner_angle_degrees(m_zone.xy[Q[(c + 3) % 4]], m_zone.xy[v], m_zone.xy[Q[(c + 1) % 4]]);
+      if(!improved) break;
+      m_dirty.swap(m_dirty_next);
+      std::fill(m_dirty_next.begin(), m_dirty_next.end(), 0);
+    }
+  }
+
+  // Moves v, if its quads are not all within [60, 120], to the best of the steps towards its
+  // targets: where it makes each quad at it a parallelogram, the turns about input corners,
+  // its neighbours' mean (a Laplacian step) and the mean of the others. True if it moved.
+  bool try_move(std::size_t v)
+  {
+    const Local current = local_cost(v, nullptr);
+    if(current.worst <= 30.0) return false;
+    const Point_2d old = m_zone.xy[v];
+    std::vector<Point_2d>& targets = m_targets;
+    targets.push_back(m_zone.parallelogram_targets(v, m_quads_at, targets));
+    add_turns_about_corners(v, m_quads_at, targets);
+    Point_2d mean{0, 0};
+    for(std::size_t k = 0; k + 1 < targets.size(); ++k) { mean.x += targets[k].x; mean.y += targets[k].y; }
+    mean.x /= double(targets.size() - 1); mean.y /= double(targets.size() - 1);
+    targets.push_back(mean);
+    Local best = current;
+    Point_2d best_p = old;
+    for(const Point_2d& t : targets)
+      for(double step : { 1.0, 0.5, 0.25, 0.1 }) {
+        Point_2d p{old.x + step * (t.x - old.x), old.y + step * (t.y - old.y)};
+        if(!slide_to(v, p)) continue;
+        m_zone.xy[v] = p;
+        const Local c = local_cost(v, &best);
+        m_zone.xy[v] = old;
+        if(c < best) {
+          best = c;
+          best_p = p;
         }
-        if(std::abs(angle_sum - expected) > 1e-6)
-          r.invalid += 1 << 20; // folded
       }
-      return r;
-    };
-    // a vertex whose quads have not changed since it was last tried would not move: only
-    // vertices sharing a quad with a moved one are tried again (same result, far fewer tries)
-    std::vector<char> dirty(m_zone.mesh.points.size(), 1), dirty_next(m_zone.mesh.points.size(), 0);
-    std::vector<Point_2d> targets;
-    auto run_passes = [&](const std::vector<std::size_t>& vertices) {
-      for(int pass = 0; pass < passes; ++pass) {
-        bool improved = false;
-        for(std::size_t v : vertices) {
-          if(!dirty[v]) continue;
-          const Local current = local_cost(v, nullptr);
-          if(current.worst <= 30.0) continue; // within [60, 120]: good enough
-          const Point_2d old = m_zone.xy[v];
-          targets.push_back(m_zone.parallelogram_targets(v, quads_at, targets));
-          add_turns_about_corners(v, quads_at, targets);
-          Point_2d mean{0, 0};
-          for(std::size_t k = 0; k + 1 < targets.size(); ++k) { mean.x += targets[k].x; mean.y += targets[k].y; }
-          mean.x /= double(targets.size() - 1); mean.y /= double(targets.size() - 1);
-          targets.push_back(mean);
-          Local best = current;
-          Point_2d best_p = old;
-          for(const Point_2d& t : targets)
-            for(double step : { 1.0, 0.5, 0.25, 0.1 }) {
-              Point_2d p{old.x + step * (t.x - old.x), old.y + step * (t.y - old.y)};
-              if(!slide_to(v, p)) continue;
-              m_zone.xy[v] = p;
-              const Local c = local_cost(v, &best);
-              m_zone.xy[v] = old;
-              if(c < best) {
-                best = c;
-                best_p = p;
-              }
-            }
-          if(best_p.x != old.x || best_p.y != old.y) {
-            m_zone.xy[v] = best_p;
-            improved = true;
-            for(std::size_t q : quads_at[v])
-              for(std::size_t w : m_zone.mesh.quads[q])
-                dirty[w] = dirty_next[w] = 1;
-          }
-        }
-        if(!improved) break;
-        dirty.swap(dirty_next);
-        std::fill(dirty_next.begin(), dirty_next.end(), 0);
-      }
-    };
-    run_passes(movable);
-    // A quad still outside [45, 135] (often just: a core quad beside a moved notch) may be
-    // mended by moving the core vertices within two quads of it too: the core keeps its
-    // connectivity, and no move may put one of its angles out of range.
-    auto ring = [&](const std::vector<std::size_t>& from) { // the vertices of their quads
-      std::vector<std::size_t> out;
-      for(std::size_t u : from)
-        for(std::size_t q : quads_at[u])
-          out.insert(out.end(), m_zone.mesh.quads[q].begin(), m_zone.mesh.quads[q].end());
-      std::sort(out.begin(), out.end());
-      out.erase(std::unique(out.begin(), out.end()), out.end());
-      return out;
-    };
+    if(best_p.x == old.x && best_p.y == old.y) return false;
+    m_zone.xy[v] = best_p;
+    return true;
+  }
+
+  // the vertices of the quads at `from`
+  std::vector<std::size_t> ring(const std::vector<std::size_t>& from) const
+  {
+    std::vector<std::size_t> out;
+    for(std::size_t u : from)
+      for(std::size_t q : m_quads_at[u])
+        out.insert(out.end(), m_zone.mesh.quads[q].begin(), m_zone.mesh.quads[q].end());
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+  }
+
+  // A quad still outside [45, 135] (often just: a core quad beside a moved notch) may be
+  // mended by moving the core vertices within two quads of it too: the interior core vertices
+  // there, but `fixed_points`. The core keeps its connectivity, and no move may put one of its
+  // angles out of range.
+  std::vector<std::size_t> repair_vertices(const std::vector<std::size_t>& fixed_points) const
+  {
     std::vector<std::size_t> near_bad;
     for(const Quad& q : m_zone.mesh.quads) {
       const double b = m_zone.made_or_changed(q) ? m_zone.quad_cost(q) : 0.0;
@@ -172,36 +227,31 @@ public:
     near_bad.erase(std::remove_if(near_bad.begin(), near_bad.end(), [&](std::size_t x) {
                      return x >= m_zone.core_points || m_zone.on_cycle(x) || m_zone.is_input_vertex(x) || fixed[x];
                    }), near_bad.end());
-    std::vector<Point_2d> before(near_bad.size());
-    for(std::size_t k = 0; k < near_bad.size(); ++k) before[k] = m_zone.xy[near_bad[k]];
-    if(!near_bad.empty()) {
-      std::vector<std::size_t> all = near_bad;
-      all.insert(all.end(), movable.begin(), movable.end());
-      // the first passes left every clean vertex where a try would leave it again: only the
-      // repair's own vertices join the dirty ones (same moves, far fewer tries)
-      for(std::size_t v : near_bad) dirty[v] = 1;
-      run_passes(all);
-    }
-    write_back(movable);
+    return near_bad;
+  }
+
+  // The repair's moves into the kernel, where the kernel's predicates have the last word: a
+  // core quad they left nearly flat or not strictly convex undoes them all. The quads at the
+  // vertices kept moved are checked with the buffer's (repaired_mark).
+  void keep_repair_if_valid(const std::vector<std::size_t>& repair, const std::vector<Point_2d>& before)
+  {
     std::vector<std::size_t> moved;
     std::vector<Point_2d> moved_from;
     std::vector<Point_2> exact_before; // for undoing: the core's points are not all doubles
-    for(std::size_t k = 0; k < near_bad.size(); ++k)
-      if(m_zone.xy[near_bad[k]].x != before[k].x || m_zone.xy[near_bad[k]].y != before[k].y) {
-        moved.push_back(near_bad[k]);
+    for(std::size_t k = 0; k < repair.size(); ++k)
+      if(m_zone.xy[repair[k]].x != before[k].x || m_zone.xy[repair[k]].y != before[k].y) {
+        moved.push_back(repair[k]);
         moved_from.push_back(before[k]);
-        exact_before.push_back(m_zone.mesh.points[near_bad[k]]);
+        exact_before.push_back(m_zone.mesh.points[repair[k]]);
       }
     write_back(moved);
-    // the kernel's predicates have the last word: a core quad the repair moves left nearly flat
-    // or not strictly convex undoes them all
     bool valid = true;
     for(std::size_t v : moved)
-      for(std::size_t q : quads_at[v]) valid = valid && m_zone.is_valid_quad(m_zone.mesh.quads[q]);
+      for(std::size_t q : m_quads_at[v]) valid = valid && m_zone.is_valid_quad(m_zone.mesh.quads[q]);
     m_zone.repaired_mark.assign(m_zone.mesh.points.size(), 0);
     for(std::size_t k = 0; k < moved.size(); ++k) {
       if(valid) {
-        m_zone.repaired_mark[moved[k]] = 1; // check_quads() looks at its quads too
+        m_zone.repaired_mark[moved[k]] = 1;
       } else {
         m_zone.xy[moved[k]] = moved_from[k];
         m_zone.mesh.points[moved[k]] = exact_before[k];
@@ -209,7 +259,6 @@ public:
     }
   }
 
-private:
   // Beside an input corner, v turns about it to share the corner's angle evenly between the
   // two quads it separates there (the paper's rotated bisectors, §5): one target per corner.
   void add_turns_about_corners(std::size_t v, const Vertex_quads& quads_at,
@@ -289,6 +338,10 @@ private:
   }
 
   Buffer_zone<K>& m_zone;
+  const Vertex_quads m_quads_at;
+  const double m_min_edge2; // the square of min_edge_length()
+  std::vector<char> m_dirty, m_dirty_next; // per point: to try in this pass, in the next
+  std::vector<Point_2d> m_targets;         // try_move()'s, kept for their memory
 };
 
 } // namespace internal

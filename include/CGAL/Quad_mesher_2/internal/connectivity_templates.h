@@ -37,115 +37,50 @@ class Connectivity_templates : Buffer_tolerances
 public:
   explicit Connectivity_templates(Buffer_zone<K>& zone) : m_zone(zone), m_fans(zone) {}
 
-  // A notch (buffer-side angle under 112.5 degrees) that apply_boundary_templates() left cannot move: a
-  // core angle of 45 degrees at it (the centre of a cell's template, or a transition
-  // template's corner) would go below. Its two first-layer quads would split 90 degrees, 45
-  // each at best (Lake Superior's (0.8877, -0.6432): 44.9). A new core quad B A Y C over it,
-  // Y on the bisector (paper §4.4: templates also fill the buffer with new quads), takes B off
-  // the boundary: with Y where the quad has a little under 135 degrees, A and C lose about
-  // 67.5 degrees of buffer side each and Y has about 225, the angles template 1(a) gives by
-  // moving B there. Kept if the quad is within [45, 135], its new edges keep the clearance,
-  // and the buffer-side angles at A, Y and C come nearer [112.5, 225] than before.
-  // Within 2h of an input corner only notches under 95 degrees are filled: from there the
-  // first layer splits beta in two quads over 45 degrees each, and a new quad over such a notch
-  // (100 to 112 degrees, most of them transition templates) changed the strip's pairing for
-  // the worse (airfoil_3elem_jigsaw's (0.5, 0.906): a sheared ladder at the nearby corner).
-  // Away from corners every notch is (the guitar's 99.7 degrees at (35.28, 6.18)). Nor is a notch
-  // that faces a corner needing a fan of three (its nearest boundary point is that corner): the
-  // notch is the fan's room, and filling it left the fan's quads squeezed (the 30P30N main
-  // element's trailing edge, bird's tip).
+  // A notch (buffer-side angle under 112.5 degrees) that apply_boundary_templates() left
+  // cannot move: a core angle of 45 degrees at it (the centre of a cell's template, or a
+  // transition template's corner) would go below, and its two first-layer quads would split
+  // 90 degrees at best. A new core quad B A Y C over it (paper §4.4: templates also fill the
+  // buffer with new quads) takes B off the boundary: with Y where the quad has a little under
+  // 135 degrees, A and C lose about 67.5 degrees of buffer side each and Y has about 225, the
+  // angles template 1(a) gives by moving B there. Kept if the quad is within [45, 135], its
+  // new edges keep the clearance, and the buffer-side angles at A, Y and C come nearer
+  // [112.5, 225] than before. Not every notch is filled: see may_fill().
   void fill_notch(std::size_t c, std::size_t i)
   {
     auto& cyc = m_zone.cycles[c];
     const std::size_t n = cyc.size();
-    const std::size_t a2 = cyc[(i + n - 2) % n], a = cyc[(i + n - 1) % n], b = cyc[i];
-    const std::size_t c1 = cyc[(i + 1) % n], c2 = cyc[(i + 2) % n];
-    const double beta = right_side_angle(m_zone.xy[a], m_zone.xy[b], m_zone.xy[c1]);
-    if(beta >= 112.5 - angle_tolerance || (beta >= 95.0 && m_zone.near_input_corner(b))) return;
-    {
-      const Loop_locator::Hit h = m_zone.locator->closest(m_zone.xy[b], 2 * m_zone.local_size[b]);
-      const std::size_t nv = m_zone.locator->loop(h.loop).size();
-      if((h.t <= 0 && m_fans.needs_fan_of_three(h.loop, h.edge))
-         || (h.t >= 1 && m_fans.needs_fan_of_three(h.loop, (h.edge + 1) % nv)))
-        return;
-    }
-    // the worst first: a filled notch is off the boundary, and Y has its own angle (a
-    // lattice notch at 90 degrees beside a corner at 270 leaves two just out, far nearer)
-    auto excess = [&](const Point_2d& y) { return buffer_angle_excesses(m_zone.xy[a2], m_zone.xy[a], y, m_zone.xy[c1], m_zone.xy[c2], false); };
-    const Point_2d d = right_bisector(m_zone.xy[a], m_zone.xy[b], m_zone.xy[c1]);
-    const double s = 0.5 * (length_2d(minus_2d(m_zone.xy[a], m_zone.xy[b])) + length_2d(minus_2d(m_zone.xy[c1], m_zone.xy[b])));
-    const double clear = 0.25 * m_zone.local_size[b];
-    // a candidate must gain more than rounding: the choice is the same on a scaled domain
-    double best = excess(m_zone.xy[b]);
-    Point_2d best_y{ 0, 0 };
-    bool found = false;
-    auto consider = [&](const Point_2d& y) {
-      const double after = excess(y);
-      if(!(after < best - angle_tolerance / 10) || quad_badness({ m_zone.xy[b], m_zone.xy[a], y, m_zone.xy[c1] }) > 45.0 + core_slack
-         || !(m_zone.locator->segment_distance(m_zone.xy[a], y, clear) > clear) || !(m_zone.locator->segment_distance(y, m_zone.xy[c1], clear) > clear))
-        return false;
-      best = after;
-      best_y = y;
-      found = true;
-      return true;
-    };
+    Notch notch(m_zone, cyc[(i + n - 2) % n], cyc[(i + n - 1) % n], cyc[i], cyc[(i + 1) % n], cyc[(i + 2) % n]);
+    if(!may_fill(notch)) return;
+    auto consider = [&notch](const Point_2d& y) { return notch.consider(y); };
     // |BY| = 1.01 s: at s (template 1(a)'s 0.71 s diagonal) a lattice notch's quad has exactly
-    // 135 degrees at Y, in or out by rounding, and the runs of a scaled domain differed
+    // 135 degrees at Y, in or out by rounding, and a scaled domain's choice would differ
     for(double f : { 1.01, 1.1, 0.9, 1.2, 0.8 })
-      consider(Point_2d{ m_zone.xy[b].x + f * s * d.x, m_zone.xy[b].y + f * s * d.y });
+      consider(notch.along(f, notch.d));
     // Beside an adaptive core the quad's other corners are not a lattice notch's: Y then
-    // needs to lie off the bisector (a pattern search as for a vertex, search_boundary_vertex())
-    // f s from b, turned by k 15 degrees from the bisector
-    auto off_bisector = [&](double f, int k) {
-      const Point_2d u = turned_2d(d, k * pi / 12);
-      return Point_2d{ m_zone.xy[b].x + f * s * u.x, m_zone.xy[b].y + f * s * u.y };
-    };
-    if(!found)
+    // needs to lie off the bisector
+    if(!notch.found)
       for(double f : { 0.7, 0.85, 1.0, 1.15, 1.3 })
         for(int k = -2; k <= 2; ++k)
-          consider(off_bisector(f, k));
-    // A notch barely out (111.65 degrees at a transition template's corner, core angles 45,
-    // 45, 68, 90, blob_37's (-0.1252, 9.0710)) has its Y on a thin band, far off the bisector:
-    // the quad's angle at Y exactly 135 (a lone quad's corner has beta 225 at least), and at a
-    // neighbour little enough to keep its beta in range. The ring misses the band; a search of
-    // the quad's excess over [45, 135] plus the betas' reaches it, then consider() checks.
-    // Not beside an input corner, whose buffer is §5's (naca0012's trailing edge: such a quad
-    // made the round invalid).
-    if(!found && !m_zone.near_input_corner(b)) {
-      auto penalty = [&](const Point_2d& y) {
-        return (std::max)(0.0, quad_badness({ m_zone.xy[b], m_zone.xy[a], y, m_zone.xy[c1] }) - 45.0) + excess(y);
-      };
-      Point_2d start = m_zone.xy[b];
-      double least = std::numeric_limits<double>::infinity();
-      for(double f : { 0.7, 0.85, 1.0, 1.15, 1.3 })
-        for(int k = -5; k <= 5; ++k) {
-          const Point_2d y = off_bisector(f, k);
-          const double p = penalty(y);
-          if(p < least) { least = p; start = y; }
-        }
-      pattern_search(start, s, [&](const Point_2d& y) {
-        const double p = penalty(y);
-        if(!(p < least)) return false;
-        least = p;
-        start = y;
-        return true;
-      });
-      consider(start);
-    }
-    if(!found) return;
-    pattern_search(best_y, s, consider);
+          consider(notch.off_bisector(f, k));
+    // Not beside an input corner, whose buffer is §5's: a quad there over a notch near the
+    // range made the round invalid.
+    if(!notch.found && !m_zone.near_input_corner(notch.b))
+      consider(notch.barely_out_start());
+    if(!notch.found) return;
+    pattern_search(notch.best_y, notch.s, consider);
     // Y is a core point like the others (the first buffer points come after the core's)
-    const std::size_t y = m_zone.add_core_point(best_y, m_zone.local_size[b], true);
-    m_zone.on_cycle_mark[b] = 0;
+    const std::size_t y = m_zone.add_core_point(notch.best_y, m_zone.local_size[notch.b], true);
+    m_zone.on_cycle_mark[notch.b] = 0;
     m_zone.core_points = m_zone.mesh.points.size();
-    m_zone.add_quad({ b, a, y, c1 });
+    m_zone.add_quad({ notch.b, notch.a, y, notch.c1 });
     cyc[i] = y;
     ++m_zone.report.filled_notches;
   }
 
   // A convex corner that no move brought into range (buffer-side angle over 225 degrees) whose
   // core angle is a single quad's, jammed by its other corners: a transition template's 45
-  // degrees at a neighbour, 135 opposite (naca0012's (0.0710, -0.0456): 108 degrees, beta 252).
+  // degrees at a neighbour, 135 opposite.
   // The quad B C X A is split in three through the midpoints of its two boundary edges and its
   // centre O: B Mc O Ma, Mc C X O, Ma O X A (on a square, three rectangles of right angles,
   // the new points' betas 180). B's quad then shares no corner with the template that jammed
@@ -207,6 +142,95 @@ public:
   }
 
 private:
+
+  // The search for the fourth corner Y of a quad over the notch at b (a2, a, b, c1, c2
+  // consecutive on its cycle): the best admissible Y so far, `best_y`, if `found`.
+  struct Notch
+  {
+    Notch(const Buffer_zone<K>& zone, std::size_t a2_, std::size_t a_, std::size_t b_, std::size_t c1_, std::size_t c2_)
+      : z(zone), a2(a2_), a(a_), b(b_), c1(c1_), c2(c2_),
+        beta(right_side_angle(z.xy[a], z.xy[b], z.xy[c1])), d(right_bisector(z.xy[a], z.xy[b], z.xy[c1])),
+        s(0.5 * (length_2d(minus_2d(z.xy[a], z.xy[b])) + length_2d(minus_2d(z.xy[c1], z.xy[b])))),
+        clear(0.25 * z.local_size[b])
+    {}
+
+    // the buffer-side angles' excess with Y at y, the worst first: a filled notch is off the
+    // boundary, and Y has its own angle (a lattice notch at 90 degrees beside a corner at 270
+    // leaves two just out, far nearer)
+    double excess(const Point_2d& y) const
+    {
+      return buffer_angle_excesses(z.xy[a2], z.xy[a], y, z.xy[c1], z.xy[c2], false);
+    }
+    double quad_badness_with(const Point_2d& y) const { return quad_badness({ z.xy[b], z.xy[a], y, z.xy[c1] }); }
+
+    // Y at y if that lowers the excess by more than rounding (the same choice on a scaled
+    // domain), keeps the quad within [45, 135] and its new edges clear of the boundary
+    bool consider(const Point_2d& y)
+    {
+      const double after = excess(y);
+      if(!(after < best - angle_tolerance / 10) || quad_badness_with(y) > 45.0 + core_slack
+         || !(z.locator->segment_distance(z.xy[a], y, clear) > clear) || !(z.locator->segment_distance(y, z.xy[c1], clear) > clear))
+        return false;
+      best = after;
+      best_y = y;
+      found = true;
+      return true;
+    }
+
+    // f s from b along the unit vector u
+    Point_2d along(double f, const Point_2d& u) const { return Point_2d{ z.xy[b].x + f * s * u.x, z.xy[b].y + f * s * u.y }; }
+    // f s from b, turned by k 15 degrees from the bisector
+    Point_2d off_bisector(double f, int k) const { return along(f, turned_2d(d, k * pi / 12)); }
+
+    // A notch barely out at a transition template's corner has its Y on a thin band far off
+    // the bisector: the quad's angle at Y exactly 135 (a lone quad's corner has beta 225 at
+    // least), and at a neighbour little enough to keep its beta in range. The ring misses the
+    // band; a search of the quad's excess over [45, 135] plus the betas' reaches it.
+    Point_2d barely_out_start() const
+    {
+      auto penalty = [&](const Point_2d& y) { return (std::max)(0.0, quad_badness_with(y) - 45.0) + excess(y); };
+      Point_2d start = z.xy[b];
+      double least = std::numeric_limits<double>::infinity();
+      for(double f : { 0.7, 0.85, 1.0, 1.15, 1.3 })
+        for(int k = -5; k <= 5; ++k) {
+          const Point_2d y = off_bisector(f, k);
+          const double p = penalty(y);
+          if(p < least) { least = p; start = y; }
+        }
+      pattern_search(start, s, [&](const Point_2d& y) {
+        const double p = penalty(y);
+        if(!(p < least)) return false;
+        least = p;
+        start = y;
+        return true;
+      });
+      return start;
+    }
+
+    const Buffer_zone<K>& z;
+    const std::size_t a2, a, b, c1, c2;
+    const double beta;
+    const Point_2d d; // the unit bisector of beta, into the buffer
+    const double s;   // the mean length of the notch's two edges
+    const double clear;
+    double best = excess(z.xy[b]);
+    Point_2d best_y{ 0, 0 };
+    bool found = false;
+  };
+
+  // Within 2h of an input corner only notches under 95 degrees are filled: from there the
+  // first layer splits beta in two quads over 45 degrees each, and a new quad over such a
+  // notch changed the strip's pairing for the worse. Nor is a notch that faces a corner
+  // needing a fan of three (its nearest boundary point is that corner): the notch is the
+  // fan's room, and filling it squeezes the fan's quads.
+  bool may_fill(const Notch& notch) const
+  {
+    if(notch.beta >= 112.5 - angle_tolerance || (notch.beta >= 95.0 && m_zone.near_input_corner(notch.b))) return false;
+    const Loop_locator::Hit h = m_zone.locator->closest(m_zone.xy[notch.b], 2 * m_zone.local_size[notch.b]);
+    const std::size_t nv = m_zone.locator->loop(h.loop).size();
+    return !((h.t <= 0 && m_fans.needs_fan_of_three(h.loop, h.edge))
+             || (h.t >= 1 && m_fans.needs_fan_of_three(h.loop, (h.edge + 1) % nv)));
+  }
 
   Buffer_zone<K>& m_zone;
   Sharp_corner_fans<K> m_fans;

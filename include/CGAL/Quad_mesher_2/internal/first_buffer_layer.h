@@ -24,11 +24,143 @@ namespace CGAL {
 namespace Quad_mesher_2 {
 namespace internal {
 
+// The first buffer points of cycle c, moved one at a time to improve the two layers they
+// will bound: their quads B_i F_i F_{i+1} B_{i+1} and the projection quads
+// F_i G_i G_{i+1} F_{i+1}, G the nearest boundary point (Lemmas 3 and 4 ask that the F chain
+// run nearly parallel to the boundary, so that the projections make right angles). A move is
+// kept if it lowers (invalid quads, quads outside [45, 135], worst deviation from 90 degrees,
+// sum of squared deviations) of the four quads at F_i; F_i stays within half its distance
+// from B_i of where it started, so it cannot wander across the buffer, and does not move
+// within twice the local size of a loop corner.
+template <class K>
+class First_point_smoothing : Buffer_tolerances
+{
+  struct Local
+  {
+    int invalid = 0, out = 0;
+    double worst = 0, sum = 0;
+    bool operator<(const Local& o) const
+    {
+      if(invalid != o.invalid) return invalid < o.invalid;
+      if(out != o.out) return out < o.out;
+      if(worst < o.worst - angle_tolerance) return true;
+      if(worst > o.worst + angle_tolerance) return false;
+      return sum < o.sum - angle_tolerance * (1 + o.sum);
+    }
+    void add(double b)
+    {
+      if(b >= 1000.0) ++invalid;
+      else if(b > 45.0 + angle_tolerance) ++out;
+      worst = (std::max)(worst, b);
+      sum += b * b;
+    }
+  };
+
+public:
+  First_point_smoothing(Buffer_zone<K>& zone, std::size_t c)
+    : m_zone(zone), cyc(zone.cycles[c]), n(cyc.size()), l(zone.cycle_loop[c]), F(zone.first_points[c]),
+      start(F), reach(n), G(n)
+  {
+    for(int k = 0; k < 8; ++k) {
+      const double a = k * pi / 4;
+      direction[k] = Point_2d{ std::cos(a), std::sin(a) };
+    }
+  }
+
+  void smooth()
+  {
+    if(n < 3) return;
+    for(std::size_t i = 0; i < n; ++i) find_reach(i);
+    for(int pass = 0; pass < 8; ++pass) {
+      bool moved = false;
+      for(std::size_t i = 0; i < n; ++i)
+        if(reach[i] != 0 && try_move(i)) moved = true;
+      if(!moved) break;
+    }
+  }
+
+private:
+  // F_i's boundary point G_i, and how far F_i may move: half its distance from B_i, none near
+  // a loop corner (the strip fans there and its nodes are not the projections)
+  void find_reach(std::size_t i)
+  {
+    const auto& loop_xy = m_zone.locator->loop(l);
+    const std::size_t nv = loop_xy.size();
+    const Loop_locator::Hit hit = m_zone.locator->closest(F[i], 2 * m_zone.local_size[cyc[i]], l);
+    G[i] = hit.point;
+    reach[i] = 0.5 * length_2d(minus_2d(F[i], m_zone.xy[cyc[i]]));
+    const double near = 2 * m_zone.local_size[cyc[i]];
+    for(std::size_t step : { nv - 1, std::size_t(1) }) // backwards from the edge's start, forwards from its end
+      for(std::size_t k = step == 1 ? (hit.edge + 1) % nv : hit.edge, walked = 0;
+          reach[i] > 0 && walked < nv && length_2d(minus_2d(loop_xy[k], hit.point)) <= near;
+          k = (k + step) % nv, ++walked)
+        if(m_zone.is_feature(l, k)) reach[i] = 0;
+  }
+
+  // The four quads at F_i with F_i at f, its boundary point from g_at(f) (asked only when
+  // needed). With `bound`, stops once the result cannot be below it: each quad only adds.
+  template <class Boundary_point>
+  Local local(std::size_t i, const Point_2d& f, const Boundary_point& g_at, const Local* bound) const
+  {
+    const std::size_t p = (i + n - 1) % n, q = (i + 1) % n;
+    Local r;
+    auto add = [&](const std::array<Point_2d, 4>& quad) {
+      r.add(quad_badness(quad));
+      return bound == nullptr || r < *bound;
+    };
+    if(!add({ m_zone.xy[cyc[p]], F[p], f, m_zone.xy[cyc[i]] }) || !add({ m_zone.xy[cyc[i]], f, F[q], m_zone.xy[cyc[q]] }))
+      return r;
+    const Point_2d g = g_at(f);
+    if(add({ F[p], G[p], g, f }))
+      add({ f, g, G[q], F[q] });
+    return r;
+  }
+
+  // Moves F_i, unless its quads are valid and within [70, 110], to the best of the tries:
+  // towards the middle of its neighbours, and a few steps in eight directions. True if it
+  // moved.
+  bool try_move(std::size_t i)
+  {
+    Local best = local(i, F[i], [&](const Point_2d&) { return G[i]; }, nullptr);
+    if(best.invalid == 0 && best.out == 0 && best.worst <= 20.0) return false;
+    const double h = m_zone.local_size[cyc[i]];
+    Point_2d best_f = F[i], best_g = G[i];
+    const Point_2d mid{ 0.5 * (F[(i + n - 1) % n].x + F[(i + 1) % n].x),
+                        0.5 * (F[(i + n - 1) % n].y + F[(i + 1) % n].y) };
+    tries.clear();
+    for(double s : { 1.0, 0.5, 0.25 })
+      tries.push_back(Point_2d{ F[i].x + s * (mid.x - F[i].x), F[i].y + s * (mid.y - F[i].y) });
+    for(double s : { 0.2, 0.1, 0.05 })
+      for(const Point_2d& d : direction)
+        tries.push_back(Point_2d{ F[i].x + s * h * d.x, F[i].y + s * h * d.y });
+    for(const Point_2d& f : tries) {
+      if(length_2d(minus_2d(f, start[i])) > reach[i]) continue;
+      Point_2d g{ 0, 0 };
+      auto boundary_point = [&](const Point_2d& at) { return g = m_zone.locator->closest(at, 2 * h, l).point; };
+      const Local r = local(i, f, boundary_point, &best);
+      if(r < best) { best = r; best_f = f; best_g = g; }
+    }
+    if(best_f.x == F[i].x && best_f.y == F[i].y) return false;
+    F[i] = best_f;
+    G[i] = best_g;
+    return true;
+  }
+
+  Buffer_zone<K>& m_zone;
+  const std::vector<std::size_t>& cyc;
+  const std::size_t n, l;
+  std::vector<Point_2d>& F;
+  const std::vector<Point_2d> start; // F as first placed
+  std::vector<double> reach;
+  std::vector<Point_2d> G;
+  std::array<Point_2d, 8> direction; // the eight directions the tries step in
+  std::vector<Point_2d> tries;       // try_move()'s, kept for their memory
+};
+
 /// Stage "buffer1" (paper §4.5) on one buffer zone: see the file comment.
 template <class K>
 class First_buffer_layer : Buffer_tolerances
 {
-
 public:
   explicit First_buffer_layer(Buffer_zone<K>& zone) : m_zone(zone) {}
 
@@ -39,37 +171,12 @@ public:
     m_zone.first_points.assign(m_zone.cycles.size(), {});
     for(std::size_t c = 0; c < m_zone.cycles.size(); ++c) {
       const auto& cyc = m_zone.cycles[c];
-      const std::size_t n = cyc.size(), l = m_zone.cycle_loop[c];
+      const std::size_t n = cyc.size();
       auto& F = m_zone.first_points[c];
       F.resize(n);
-      for(std::size_t i = 0; i < n; ++i) {
-        const Point_2d& a = m_zone.xy[cyc[(i + n - 1) % n]];
-        const Point_2d& b = m_zone.xy[cyc[i]];
-        const Point_2d& nb = m_zone.xy[cyc[(i + 1) % n]];
-        const Loop_locator::Hit h = m_zone.locator->closest(b, 2 * m_zone.local_size[cyc[i]], l);
-        const Point_2d toward = normalized_2d(minus_2d(h.point, b));
-        // halfway between the bisector of beta and the direction to the nearest boundary
-        // point: bisectors alone converge in the core's notches and cross
-        const Point_2d bis = right_bisector(a, b, nb);
-        Point_2d d = normalized_2d(Point_2d{ 0.5 * (bis.x + toward.x), 0.5 * (bis.y + toward.y) });
-        // but no farther from the bisector than leaves B's two first-layer angles, beta / 2
-        // plus and minus the deviation, within [45, 135] with a fifth to spare (Lemma 3: the
-        // nearest boundary point across a narrow channel turned a tongue tip's F point until
-        // its quad had 164 degrees at B). A notch of 90 degrees or less (beside a sharp
-        // corner, where Lemma 2 failed) has no such room: on its bisector alone its F point
-        // and its neighbours' crossed (the guitar's (11.53, 7.93)).
-        const double beta = right_side_angle(a, b, nb) * pi / 180;
-        const double limit = 0.8 * (std::min)(beta / 2 - pi / 4, 3 * pi / 4 - beta / 2);
-        const double dev = std::atan2(cross_2d(bis, d), dot_2d(bis, d));
-        if(limit > 0 && std::abs(dev) > limit) {
-          const double t = dev > 0 ? limit : -limit;
-          d = turned_2d(bis, t);
-        }
-        const double c_dn = (std::max)(dot_2d(d, toward), 0.5);
-        const double lambda = 0.5 * h.dist / c_dn;
-        F[i] = Point_2d{b.x + lambda * d.x, b.y + lambda * d.y};
-      }
-      smooth_first_points(c);
+      for(std::size_t i = 0; i < n; ++i)
+        F[i] = first_point(c, i);
+      First_point_smoothing<K>(m_zone, c).smooth();
       const std::size_t base = m_zone.mesh.points.size();
       for(std::size_t i = 0; i < n; ++i) {
         m_zone.add_point(F[i]);
@@ -86,111 +193,35 @@ public:
   }
 
 private:
-  // The first buffer points of cycle c, moved one at a time to improve the two layers they
-  // will bound: their quads B_i F_i F_{i+1} B_{i+1} and the projection quads
-  // F_i G_i G_{i+1} F_{i+1}, G the nearest boundary point (Lemmas 3 and 4 ask that the F
-  // chain run nearly parallel to the boundary, so that the projections make right angles).
-  // A move is kept if it lowers (invalid quads, quads outside [45, 135], worst deviation from
-  // 90 degrees, sum of squared deviations) of the four quads at F_i; F_i stays within half
-  // its distance from B_i of where it started, so it cannot wander across the buffer, and
-  // does not move within twice the local size of a loop corner.
-  void smooth_first_points(std::size_t c)
+  // The first buffer point of core boundary vertex B = cyc[i] of cycle c: halfway (in
+  // distance to the boundary) between B and the boundary, along the mean of the bisector of
+  // beta and the direction to the nearest boundary point (bisectors alone converge in the
+  // core's notches and cross), but no farther from the bisector than leaves B's two
+  // first-layer angles, beta / 2 plus and minus the deviation, within [45, 135] with a fifth
+  // to spare (Lemma 3). A notch of 90 degrees or less (beside a sharp corner, where Lemma 2
+  // failed) has no such room and keeps the mean: on its bisector alone neighbouring F points
+  // cross.
+  Point_2d first_point(std::size_t c, std::size_t i) const
   {
     const auto& cyc = m_zone.cycles[c];
     const std::size_t n = cyc.size(), l = m_zone.cycle_loop[c];
-    auto& F = m_zone.first_points[c];
-    if(n < 3) return;
-    const std::vector<Point_2d> start = F;
-    std::vector<double> reach(n);
-    std::vector<Point_2d> G(n);
-    const auto& loop_xy = m_zone.locator->loop(l);
-    const std::size_t nv = loop_xy.size();
-    for(std::size_t i = 0; i < n; ++i) {
-      const Loop_locator::Hit hit = m_zone.locator->closest(F[i], 2 * m_zone.local_size[cyc[i]], l);
-      G[i] = hit.point;
-      reach[i] = 0.5 * length_2d(minus_2d(F[i], m_zone.xy[cyc[i]]));
-      // near a corner the strip fans and its nodes are not the projections: F stays put
-      const double near = 2 * m_zone.local_size[cyc[i]];
-      for(std::size_t step : { nv - 1, std::size_t(1) }) // backwards from the edge's start, forwards from its end
-        for(std::size_t k = step == 1 ? (hit.edge + 1) % nv : hit.edge, walked = 0;
-            reach[i] > 0 && walked < nv && length_2d(minus_2d(loop_xy[k], hit.point)) <= near;
-            k = (k + step) % nv, ++walked)
-          if(m_zone.is_feature(l, k)) reach[i] = 0;
+    const Point_2d& a = m_zone.xy[cyc[(i + n - 1) % n]];
+    const Point_2d& b = m_zone.xy[cyc[i]];
+    const Point_2d& nb = m_zone.xy[cyc[(i + 1) % n]];
+    const Loop_locator::Hit h = m_zone.locator->closest(b, 2 * m_zone.local_size[cyc[i]], l);
+    const Point_2d toward = normalized_2d(minus_2d(h.point, b));
+    const Point_2d bis = right_bisector(a, b, nb);
+    Point_2d d = normalized_2d(Point_2d{ 0.5 * (bis.x + toward.x), 0.5 * (bis.y + toward.y) });
+    const double beta = right_side_angle(a, b, nb) * pi / 180;
+    const double limit = 0.8 * (std::min)(beta / 2 - pi / 4, 3 * pi / 4 - beta / 2);
+    const double dev = std::atan2(cross_2d(bis, d), dot_2d(bis, d));
+    if(limit > 0 && std::abs(dev) > limit) {
+      const double t = dev > 0 ? limit : -limit;
+      d = turned_2d(bis, t);
     }
-    struct Local
-    {
-      int invalid = 0, out = 0;
-      double worst = 0, sum = 0;
-      bool operator<(const Local& o) const
-      {
-        if(invalid != o.invalid) return invalid < o.invalid;
-        if(out != o.out) return out < o.out;
-        if(worst < o.worst - angle_tolerance) return true;
-        if(worst > o.worst + angle_tolerance) return false;
-        return sum < o.sum - angle_tolerance * (1 + o.sum);
-      }
-      void add(double b)
-      {
-        if(b >= 1000.0) ++invalid;
-        else if(b > 45.0 + angle_tolerance) ++out;
-        worst = (std::max)(worst, b);
-        sum += b * b;
-      }
-    };
-    // F_i at f, its boundary point from g_at(f) (asked only when needed). With `bound`, stops
-    // once the result cannot be below it: each quad only adds.
-    auto local = [&](std::size_t i, const Point_2d& f, auto&& g_at, const Local* bound) {
-      const std::size_t p = (i + n - 1) % n, q = (i + 1) % n;
-      Local r;
-      auto add = [&](const std::array<Point_2d, 4>& quad) {
-        r.add(quad_badness(quad));
-        return bound == nullptr || r < *bound;
-      };
-      if(!add({ m_zone.xy[cyc[p]], F[p], f, m_zone.xy[cyc[i]] }) || !add({ m_zone.xy[cyc[i]], f, F[q], m_zone.xy[cyc[q]] }))
-        return r;
-      const Point_2d g = g_at(f);
-      if(add({ F[p], G[p], g, f }))
-        add({ f, g, G[q], F[q] });
-      return r;
-    };
-    // the eight directions the tries step in, and the tries, made once
-    std::array<Point_2d, 8> direction;
-    for(int k = 0; k < 8; ++k) {
-      const double a = k * pi / 4;
-      direction[k] = Point_2d{ std::cos(a), std::sin(a) };
-    }
-    std::vector<Point_2d> tries;
-    for(int pass = 0; pass < 8; ++pass) {
-      bool moved = false;
-      for(std::size_t i = 0; i < n; ++i) {
-        if(reach[i] == 0) continue;
-        Local best = local(i, F[i], [&](const Point_2d&) { return G[i]; }, nullptr);
-        if(best.invalid == 0 && best.out == 0 && best.worst <= 20.0) continue;
-        const double h = m_zone.local_size[cyc[i]];
-        Point_2d best_f = F[i], best_g = G[i];
-        const Point_2d mid{ 0.5 * (F[(i + n - 1) % n].x + F[(i + 1) % n].x),
-                            0.5 * (F[(i + n - 1) % n].y + F[(i + 1) % n].y) };
-        tries.clear();
-        for(double s : { 1.0, 0.5, 0.25 })
-          tries.push_back(Point_2d{ F[i].x + s * (mid.x - F[i].x), F[i].y + s * (mid.y - F[i].y) });
-        for(double s : { 0.2, 0.1, 0.05 })
-          for(const Point_2d& d : direction)
-            tries.push_back(Point_2d{ F[i].x + s * h * d.x, F[i].y + s * h * d.y });
-        for(const Point_2d& f : tries) {
-          if(length_2d(minus_2d(f, start[i])) > reach[i]) continue;
-          Point_2d g{ 0, 0 };
-          auto boundary_point = [&](const Point_2d& at) { return g = m_zone.locator->closest(at, 2 * h, l).point; };
-          const Local r = local(i, f, boundary_point, &best);
-          if(r < best) { best = r; best_f = f; best_g = g; }
-        }
-        if(best_f.x != F[i].x || best_f.y != F[i].y) {
-          F[i] = best_f;
-          G[i] = best_g;
-          moved = true;
-        }
-      }
-      if(!moved) break;
-    }
+    const double c_dn = (std::max)(dot_2d(d, toward), 0.5);
+    const double lambda = 0.5 * h.dist / c_dn;
+    return Point_2d{b.x + lambda * d.x, b.y + lambda * d.y};
   }
 
   Buffer_zone<K>& m_zone;

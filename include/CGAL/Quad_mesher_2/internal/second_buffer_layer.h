@@ -68,6 +68,8 @@ class Buffer_strip : Buffer_tolerances
     std::vector<double> gparam;
   };
   struct Strip_plan { bool ok = false; Strip_result best; std::vector<std::size_t> gid; };
+  // where a gap's extra node lies: a loop vertex, or none, and its arclength
+  struct Site { std::size_t vertex; double param; };
 
 public:
   Buffer_strip(Buffer_zone<K>& zone, std::size_t cycle)
@@ -548,50 +550,62 @@ private:
     // its two phases, and makes an odd triangle count even, where that costs least.
   Strip_result pair_strip_nodes(Strip_nodes& strip)
   {
-    std::vector<std::size_t>& gid = strip.gid;
-    std::vector<std::size_t>& g = strip.g;
-    const std::vector<std::size_t>& fid = strip.fid;
-    std::vector<double>& gparam = strip.gparam;
-    const std::size_t M0 = gid.size();
     std::vector<Extra_node> extra(n);
-    struct Site { std::size_t vertex; double param; };
     std::vector<Site> sites(n);
     const std::size_t first_candidate = m_zone.xy.size();
-    for(std::size_t r = 0; r < n; ++r) {
-      const std::size_t g0 = g[r], k = (r + 1 < n ? g[r + 1] : M0) - g0;
-      if(g0 >= M0 || k == 0) continue;
-      std::size_t e = 0;
-      double longest = -1;
-      for(std::size_t j = 0; j < k; ++j) {
-        const double len = length_2d(minus_2d(m_zone.xy[gid[(g0 + j + 1) % M0]], m_zone.xy[gid[g0 + j]]));
-        if(len > longest) { longest = len; e = j; }
-      }
-      const double a = gparam[g0 + e], b = g0 + e + 1 < M0 ? gparam[g0 + e + 1] : gparam[0] + L;
-      const double mid = 0.5 * (a + b);
-      const Loop_locator::Hit h = m_zone.locator->point_at_arclength(l, mid);
-      // a left-out loop vertex near the middle keeps the input's own point
-      Site site{ none, mid };
-      Point_2d xy = h.point;
-      double nearest = 0.25 * (b - a);
-      for(std::size_t v : { h.edge, (h.edge + 1) % nv }) {
-        const double sv = mid + cyclic(m_zone.locator->arc(l, v) - mid);
-        if(std::abs(sv - mid) < nearest) {
-          nearest = std::abs(sv - mid);
-          site = Site{ v, sv };
-          xy = loop_xy[v];
-        }
-      }
-      sites[r] = site;
-      extra[r] = Extra_node{ e, m_zone.xy.size() };
-      if(site.vertex != none) { // the pairing costs its angle as the input vertex it is
-        m_zone.corner_angle.resize(m_zone.xy.size() + 1, std::numeric_limits<double>::quiet_NaN());
-        m_zone.corner_angle[m_zone.xy.size()] = m_zone.domain_angle(l, site.vertex);
-      }
-      m_zone.xy.push_back(xy);
+    for(std::size_t r = 0; r < n; ++r)
+      add_extra_candidate(strip, r, extra, sites);
+    Strip_result res = pair_strip(strip.fid, strip.gid, strip.g, extra, [this](const Quad& q) { return strip_cost(q); });
+    forget_candidates(first_candidate);
+    insert_chosen_extra_nodes(strip, extra, sites, first_candidate, res);
+    return res;
+  }
+
+  // Gap r's candidate extra node, in the middle of its longest chain edge, on the loop there
+  // or at a left-out loop vertex near it (which keeps the input's own point): `extra[r]`,
+  // `sites[r]`, with an id of its own past the mesh's points.
+  void add_extra_candidate(const Strip_nodes& strip, std::size_t r, std::vector<Extra_node>& extra, std::vector<Site>& sites)
+  {
+    const std::vector<std::size_t>& gid = strip.gid;
+    const std::vector<std::size_t>& g = strip.g;
+    const std::vector<double>& gparam = strip.gparam;
+    const std::size_t M0 = gid.size();
+    const std::size_t g0 = g[r], k = (r + 1 < n ? g[r + 1] : M0) - g0;
+    if(g0 >= M0 || k == 0) return;
+    std::size_t e = 0;
+    double longest = -1;
+    for(std::size_t j = 0; j < k; ++j) {
+      const double len = length_2d(minus_2d(m_zone.xy[gid[(g0 + j + 1) % M0]], m_zone.xy[gid[g0 + j]]));
+      if(len > longest) { longest = len; e = j; }
     }
-    Strip_result res = pair_strip(fid, gid, g, extra, [this](const Quad& q) { return strip_cost(q); });
-    // the candidates had ids of their own past the mesh's points (the cost cache knows quads
-    // by their ids); the chosen ones become mesh points
+    const double a = gparam[g0 + e], b = g0 + e + 1 < M0 ? gparam[g0 + e + 1] : gparam[0] + L;
+    const double mid = 0.5 * (a + b);
+    const Loop_locator::Hit h = m_zone.locator->point_at_arclength(l, mid);
+    // a left-out loop vertex near the middle keeps the input's own point
+    Site site{ none, mid };
+    Point_2d xy = h.point;
+    double nearest = 0.25 * (b - a);
+    for(std::size_t v : { h.edge, (h.edge + 1) % nv }) {
+      const double sv = mid + cyclic(m_zone.locator->arc(l, v) - mid);
+      if(std::abs(sv - mid) < nearest) {
+        nearest = std::abs(sv - mid);
+        site = Site{ v, sv };
+        xy = loop_xy[v];
+      }
+    }
+    sites[r] = site;
+    extra[r] = Extra_node{ e, m_zone.xy.size() };
+    if(site.vertex != none) { // the pairing costs its angle as the input vertex it is
+      m_zone.corner_angle.resize(m_zone.xy.size() + 1, std::numeric_limits<double>::quiet_NaN());
+      m_zone.corner_angle[m_zone.xy.size()] = m_zone.domain_angle(l, site.vertex);
+    }
+    m_zone.xy.push_back(xy);
+  }
+
+  // The candidates had ids of their own past the mesh's points (the cost cache knows quads
+  // by their ids): they go, and the chosen ones become mesh points.
+  void forget_candidates(std::size_t first_candidate)
+  {
     m_zone.xy.resize(first_candidate);
     m_zone.corner_angle.resize((std::min)(m_zone.corner_angle.size(), first_candidate));
     for(auto it = m_cost_cache.begin(); it != m_cost_cache.end();) {
@@ -599,6 +613,17 @@ private:
       for(std::size_t v : it->first) candidate = candidate || v >= first_candidate;
       it = candidate ? m_cost_cache.erase(it) : std::next(it);
     }
+  }
+
+  // the extra nodes the pairing took, made mesh points and put into the chain, and into the
+  // pairing's quads in place of their candidate ids
+  void insert_chosen_extra_nodes(Strip_nodes& strip, const std::vector<Extra_node>& extra, const std::vector<Site>& sites,
+                                 std::size_t first_candidate, Strip_result& res)
+  {
+    std::vector<std::size_t>& gid = strip.gid;
+    std::vector<std::size_t>& g = strip.g;
+    std::vector<double>& gparam = strip.gparam;
+    if(res.inserted.empty()) return; // no pairing
     std::vector<std::size_t> real_id(n, none); // by candidate id - first_candidate
     for(std::size_t r = n; r-- > 0;) { // from the back: earlier chain positions stay valid
       if(!res.inserted[r]) continue;
@@ -618,7 +643,6 @@ private:
     for(Quad& q : res.quads)
       for(std::size_t& v : q)
         if(v >= first_candidate && v - first_candidate < real_id.size()) v = real_id[v - first_candidate];
-    return res;
   }
 
   // A fan of boundary edges that is flat (its middle node is no input vertex and lies on a
