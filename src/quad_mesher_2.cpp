@@ -195,7 +195,7 @@ int run(const Options& opt)
                 << " polygon vertices in " << seconds["curves"].get<double>() << " s\n";
   }
 
-  QM::Stage last = domain.is_point_cloud() ? QM::Stage::POINTS : QM::Stage::BUFFER2;
+  QM::Stage last = QM::last_stage(domain);
   for(QM::Stage s : all_stages)
     if(opt.stop_after == QM::stage_name(s))
       last = s;

@@ -70,6 +70,16 @@ inline const char* stage_name(Stage s)
 }
 
 /// \ingroup PkgQuadMesher2Ref
+/// the last stage `domain` has, which `make_quad_mesh_2()` and `Quadtree_mesher_2::run()` run
+/// to by default, as the command-line tool does: `Stage::POINTS` for a point cloud,
+/// `Stage::BUFFER2` (the whole domain meshed) for a domain bounded by segments
+template <class GeomTraits>
+Stage last_stage(const Domain_2<GeomTraits>& domain)
+{
+  return domain.is_point_cloud() ? Stage::POINTS : Stage::BUFFER2;
+}
+
+/// \ingroup PkgQuadMesher2Ref
 /// The mesher, stage by stage (the role `Delaunay_mesher_2` plays in Mesh_2). Each stage
 /// records its wall-clock time in `timings()`.
 ///
@@ -269,6 +279,10 @@ public:
     return ok && m_buffer_report.invalid_quads == 0 && m_buffer_report.bad_angle_quads == 0;
   }
 
+  /// Runs every stage the input has (up to `last_stage(domain)`: the whole domain, or a point
+  /// cloud's points made vertices) and returns the mesh; see `run(Stage)`.
+  Mesh run() { return run(last_stage(m_domain)); }
+
   /// Runs the stages up to `last` and returns the mesh. Beyond the clearance, where the buffer
   /// layers would have invalid quads the quadtree is refined there and the stages run again,
   /// at most `max_refinement_rounds` times in all; a mesh with invalid quads is never
@@ -279,7 +293,7 @@ public:
   /// returned (kept from its round if a later one was worse). The rounds end too once the
   /// refinement a round asked for splits no cell (finer cells are refused there): the next
   /// round would repeat it.
-  Mesh run(Stage last = Stage::POINTS)
+  Mesh run(Stage last)
   {
     m_extra_refinement.clear();
     m_requests_applied = 0;
@@ -913,12 +927,22 @@ private:
 /// (the role `refine_Delaunay_mesh_2` plays in Mesh_2).
 template <class GeomTraits>
 Quad_mesh_2<typename GeomTraits::Point_2>
-make_quad_mesh_2(const Domain_2<GeomTraits>& domain,
-                 const Mesh_criteria_2<GeomTraits>& criteria = Mesh_criteria_2<GeomTraits>(),
-                 Stage last = Stage::POINTS)
+make_quad_mesh_2(const Domain_2<GeomTraits>& domain, const Mesh_criteria_2<GeomTraits>& criteria, Stage last)
 {
   Quadtree_mesher_2<GeomTraits> mesher(domain, criteria);
   return mesher.run(last);
+}
+
+/// \ingroup PkgQuadMesher2Ref
+/// Meshes `domain` with the criteria through every stage it has (`last_stage(domain)`): a
+/// domain bounded by segments is meshed up to its boundary, a point cloud's points become
+/// vertices.
+template <class GeomTraits>
+Quad_mesh_2<typename GeomTraits::Point_2>
+make_quad_mesh_2(const Domain_2<GeomTraits>& domain,
+                 const Mesh_criteria_2<GeomTraits>& criteria = Mesh_criteria_2<GeomTraits>())
+{
+  return make_quad_mesh_2(domain, criteria, last_stage(domain));
 }
 
 } // namespace Quad_mesher_2
