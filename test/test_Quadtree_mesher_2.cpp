@@ -312,7 +312,7 @@ TEST(Quadtree_mesher_2, stage_timings_are_recorded)
     names.push_back(t.first);
     EXPECT_GE(t.second, 0.0);
   }
-  EXPECT_EQ(names, (std::vector<std::string>{ "refine", "balance", "templates", "points" }));
+  EXPECT_EQ(names, (std::vector<std::string>{ "refine", "balance", "refinement_templates", "points" }));
 }
 
 TEST(Quadtree_mesher_2, single_point_and_collinear_points)

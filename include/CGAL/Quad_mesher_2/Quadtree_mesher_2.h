@@ -11,6 +11,7 @@
 #include <CGAL/Quad_mesher_2/Mesh_criteria_2.h>
 #include <CGAL/Quad_mesher_2/Mesh_quality_2.h>
 #include <CGAL/Quad_mesher_2/Meshing_error.h>
+#include <CGAL/Quad_mesher_2/Point_anchor.h>
 #include <CGAL/Quad_mesher_2/Quad_mesh_2.h>
 #include <CGAL/Quad_mesher_2/internal/angle_rounds.h>
 #include <CGAL/Quad_mesher_2/internal/apply_templates.h>
@@ -191,7 +192,7 @@ public:
     CGAL_precondition(m_tree != nullptr);
     auto start = std::chrono::steady_clock::now();
     Mesh mesh = internal::templated_mesh(*m_tree, &m_quad_cells, &m_vertex_keys);
-    record("templates", start);
+    record("refinement_templates", start);
     return mesh;
   }
 
@@ -454,8 +455,9 @@ public:
   std::size_t number_of_merged_points() const { return m_domain.points.size() - m_points.size(); }
   /// for each point of `anchored_points()`, its vertex in the mesh (after `insert_points()`)
   const std::vector<std::size_t>& point_vertices() const { return m_point_vertices; }
-  /// for each point of `points()`, the lattice vertex it moves (after `build_quadtree()`)
-  const std::vector<internal::Point_anchor>& anchors() const { return m_anchors; }
+  /// for each point of `anchored_points()`, the lattice vertex it moves and its tent (after
+  /// `build_quadtree()`)
+  const std::vector<Point_anchor>& anchors() const { return m_anchors; }
 
   const Quadtree& quadtree() const
   {
@@ -471,7 +473,7 @@ private:
   {
     Mesh mesh;
     std::unique_ptr<Quadtree> tree;
-    std::vector<internal::Point_anchor> anchors;
+    std::vector<Point_anchor> anchors;
     std::vector<Key_code> vertex_keys;
     std::vector<Cell_key> quad_cells;
     std::vector<Point_2> anchored_points;
@@ -900,7 +902,7 @@ private:
   std::vector<std::size_t> m_nearest;           // the j of s_i
   std::unique_ptr<Quadtree> m_tree;
   Domain_loops_2<GeomTraits> m_loops;           // of a domain with segments
-  std::vector<internal::Point_anchor> m_anchors;
+  std::vector<Point_anchor> m_anchors;
   std::vector<Key_code> m_vertex_keys;          // of the core mesh's vertices
   std::vector<Cell_key> m_quad_cells;           // the leaf of each core-mesh quad
   std::vector<Point_2> m_anchored_points;       // the points insert_points() makes vertices
