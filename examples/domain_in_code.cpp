@@ -29,7 +29,7 @@ int mesh_square_with_hole()
   domain.holes = { { 2, 2 } };                                  // a seed strictly inside the hole
 
   QM::Mesh_criteria_2<K> criteria; // cells sized by the point spacing and the gaps
-  QM::Quad_mesh_2<K::Point_2> mesh = QM::make_quad_mesh_2(domain, criteria, QM::Stage::BUFFER2);
+  QM::Quad_mesh_2<K::Point_2> mesh = QM::make_quad_mesh_2(domain, criteria); // every stage
   if(!QM::IO::write_quad_mesh("domain_in_code.msh", mesh)) // format from the extension
     return 1;
 

@@ -158,22 +158,18 @@ void print_round(std::ostream& out, const Figures& f)
       << f.seconds << " s" << std::endl;
 }
 
+// Reads the input (and, with --curves spline, decomposes its loops): false after printing why.
 template <class K>
-int run(const Options& opt)
+bool read_input(const Options& opt, QM::Domain_2<K>& domain, nlohmann::ordered_json& seconds)
 {
   using Clock = std::chrono::steady_clock;
-  const auto start = Clock::now();
-  nlohmann::ordered_json report;
-  nlohmann::ordered_json seconds;
-
-  QM::Domain_2<K> domain;
   std::string error;
   auto t = Clock::now();
   if(!QM::IO::read_domain(opt.input, domain, &error,
                           opt.merge_duplicates ? QM::IO::Duplicate_points::KEEP
                                                : QM::IO::Duplicate_points::REJECT)) {
     std::cerr << "quad-mesher: " << error << "\n";
-    return 1;
+    return false;
   }
   seconds["read"] = seconds_since(t);
   if(opt.verbose)
@@ -194,61 +190,65 @@ int run(const Options& opt)
       std::cerr << "curves: " << before << " spline points -> " << domain.points.size()
                 << " polygon vertices in " << seconds["curves"].get<double>() << " s\n";
   }
+  return true;
+}
 
-  QM::Stage last = domain.is_point_cloud() ? QM::Stage::POINTS : QM::Stage::BUFFER2;
+// the stage --stop-after names, or the last the domain has
+template <class K>
+QM::Stage stop_after_stage(const Options& opt, const QM::Domain_2<K>& domain)
+{
+  QM::Stage last = QM::last_stage(domain);
   for(QM::Stage s : all_stages)
     if(opt.stop_after == QM::stage_name(s))
       last = s;
+  return last;
+}
+
+template <class K>
+QM::Mesh_criteria_2<K> criteria_of(const Options& opt, QM::Stage last)
+{
   QM::Mesh_criteria_2<K> criteria(opt.max_size, opt.min_size, opt.max_depth);
   criteria.set_max_cells(opt.max_cells);
   // the quadtree stage alone does not refine for point insertion
   criteria.set_points_as_vertices(last != QM::Stage::QUADTREE);
-  QM::Quadtree_mesher_2<K> mesher(domain, criteria);
-  if(opt.verbose) // as they end: a hard input can take minutes a round
-    mesher.set_round_observer([](const auto& f) { print_round(std::cerr, f); });
-  QM::Quad_mesh_2<typename K::Point_2> mesh = mesher.run(last);
-  if(mesher.number_of_merged_points() > 0)
-    std::cerr << "quad-mesher: " << opt.input << ": merged " << mesher.number_of_merged_points()
-              << " duplicate input point(s)\n";
-  for(const auto& stage : mesher.timings()) { // one entry per stage and refinement round
+  return criteria;
+}
+
+// adds the mesher's stage times to `seconds` (one entry per stage and refinement round)
+template <class Mesher>
+void add_stage_times(const Options& opt, const Mesher& mesher, nlohmann::ordered_json& seconds)
+{
+  for(const auto& stage : mesher.timings()) {
     seconds[stage.first] = seconds.value(stage.first, 0.0) + stage.second;
     if(opt.verbose)
       std::cerr << "stage " << stage.first << ": " << stage.second << " s\n";
   }
+}
 
-  // runs past the clearance checked the whole mesh already (stage "check")
-  t = Clock::now();
-  const QM::Mesh_quality_2 quality = mesher.quality() ? *mesher.quality() : QM::compute_quality(mesh);
-  seconds["quality"] = seconds_since(t);
-
+// Writes every output under its staged name: false after printing which failed.
+template <class K>
+bool write_outputs(const Options& opt, const QM::Domain_2<K>& domain,
+                   const QM::Quad_mesh_2<typename K::Point_2>& mesh, Staged_outputs& staged)
+{
   // the picture shows the input's segments over the mesh
   std::vector<std::pair<typename K::Point_2, typename K::Point_2>> segments;
   for(const auto& s : domain.segments)
     segments.emplace_back(domain.points[s[0]], domain.points[s[1]]);
-
-  t = Clock::now();
-  Staged_outputs staged;
   for(const std::string& out : opt.outputs) {
     const std::string part = staged.add(out);
     const bool written = QM::IO::file_extension(out) == ".svg" ? QM::IO::write_SVG(part, mesh, segments)
                                                      : QM::IO::write_quad_mesh(part, mesh);
     if(!written) {
       std::cerr << "quad-mesher: cannot write " << out << "\n";
-      return 1;
+      return false;
     }
   }
-  seconds["write"] = seconds_since(t);
-  seconds["total"] = seconds_since(start);
+  return true;
+}
 
-  const auto& tree = mesher.quadtree();
-  report["input"] = { { "file", opt.input },
-                      { "points", domain.points.size() },
-                      { "segments", domain.segments.size() },
-                      { "holes", domain.holes.size() } };
-  report["input"]["merged_duplicate_points"] = mesher.number_of_merged_points();
-  report["kernel"] = opt.kernel;
-  report["curves"] = opt.curves;
-  report["stop_after"] = QM::stage_name(last);
+// the report's counts, angles, shape and validity of the mesh
+void add_quality(const QM::Mesh_quality_2& quality, nlohmann::ordered_json& report)
+{
   report["quads"] = quality.number_of_quads;
   report["vertices"] = quality.number_of_vertices;
   report["min_angle"] = quality.min_angle;
@@ -270,6 +270,62 @@ int run(const Options& opt)
                          { "duplicate_vertices", quality.number_of_duplicate_vertices },
                          { "near_duplicate_vertices", quality.number_of_near_duplicate_vertices },
                          { "boundary_loops", quality.number_of_boundary_loops } };
+}
+
+// the report's account of the buffer stages and the refinement rounds; warns about quads
+// with an unforced angle out
+template <class Mesher>
+void add_buffer(const Options& opt, const Mesher& mesher, nlohmann::ordered_json& report)
+{
+  const auto& b = mesher.buffer_report();
+  report["buffer"] = { { "refinement_rounds", mesher.rounds() - 1 },
+                       { "notches_moved", b.moved_notches },
+                       { "corners_cut", b.cut_corners },
+                       { "notches_filled", b.filled_notches },
+                       { "corners_split", b.split_corners },
+                       { "buffer_angles_out", b.buffer_angles_out },
+                       { "buffer_angles_out_away_from_corners", b.buffer_angles_out_away_from_corners },
+                       { "vertices_searched", b.searched_vertices },
+                       { "interior_vertices_moved", b.shaped_interior },
+                       { "first_layer_quads", b.first_layer_quads },
+                       { "second_layer_quads", b.second_layer_quads },
+                       { "quads_outside_45_135_not_forced", b.bad_angle_quads },
+                       { "quads_outside_45_135_not_forced_by_layer", by_layer(b.bad_angle_quads_by_layer) } };
+  // every round: the first is the stages' own result, before any refinement for angles
+  nlohmann::json rounds = nlohmann::json::array();
+  for(const auto& f : mesher.round_figures())
+    rounds.push_back({ { "round", f.round },
+                       { "quads", f.quads },
+                       { "valid", f.valid },
+                       { "buffer_quads_not_convex", f.invalid_quads },
+                       { "quads_outside_45_135_not_forced", f.bad_angle_quads },
+                       { "quads_outside_45_135_not_forced_by_layer", by_layer(f.bad_angle_quads_by_layer) },
+                       { "refinement_requests", f.refinement_requests },
+                       { "seconds", f.seconds } });
+  report["rounds"] = rounds;
+  const auto [rounds_end, why] = rounds_end_text(mesher);
+  report["buffer"]["rounds_end"] = rounds_end;
+  if(b.bad_angle_quads > 0)
+    std::cerr << "quad-mesher: " << opt.input << ": warning: " << b.bad_angle_quads
+              << " buffer quads have an angle outside [45, 135] that no input corner forces: " << why << "\n";
+}
+
+// the whole report but its seconds
+template <class K, class Mesher>
+void fill_report(const Options& opt, const QM::Domain_2<K>& domain, QM::Stage last, const Mesher& mesher,
+                 const QM::Quad_mesh_2<typename K::Point_2>& mesh, const QM::Mesh_quality_2& quality,
+                 nlohmann::ordered_json& report)
+{
+  const auto& tree = mesher.quadtree();
+  report["input"] = { { "file", opt.input },
+                      { "points", domain.points.size() },
+                      { "segments", domain.segments.size() },
+                      { "holes", domain.holes.size() } };
+  report["input"]["merged_duplicate_points"] = mesher.number_of_merged_points();
+  report["kernel"] = opt.kernel;
+  report["curves"] = opt.curves;
+  report["stop_after"] = QM::stage_name(last);
+  add_quality(quality, report);
   if(last >= QM::Stage::CLEARANCE) {
     const auto& removed = mesher.removed_by_clearance();
     report["clearance_removed"] = { { "outside", removed[0] },
@@ -277,39 +333,8 @@ int run(const Options& opt)
                                     { "near_boundary", removed[2] },
                                     { "single_or_pinched", removed[3] } };
   }
-  if(last >= QM::Stage::TEMPLATES) {
-    const auto& b = mesher.buffer_report();
-    report["buffer"] = { { "refinement_rounds", mesher.rounds() - 1 },
-                         { "notches_moved", b.moved_notches },
-                         { "corners_cut", b.cut_corners },
-                         { "notches_filled", b.filled_notches },
-                         { "corners_split", b.split_corners },
-                         { "buffer_angles_out", b.buffer_angles_out },
-                         { "buffer_angles_out_away_from_corners", b.buffer_angles_out_away_from_corners },
-                         { "vertices_searched", b.searched_vertices },
-                         { "interior_vertices_moved", b.shaped_interior },
-                         { "first_layer_quads", b.first_layer_quads },
-                         { "second_layer_quads", b.second_layer_quads },
-                         { "quads_outside_45_135_not_forced", b.bad_angle_quads },
-                         { "quads_outside_45_135_not_forced_by_layer", by_layer(b.bad_angle_quads_by_layer) } };
-    // every round: the first is the stages' own result, before any refinement for angles
-    nlohmann::json rounds = nlohmann::json::array();
-    for(const auto& f : mesher.round_figures())
-      rounds.push_back({ { "round", f.round },
-                         { "quads", f.quads },
-                         { "valid", f.valid },
-                         { "buffer_quads_not_convex", f.invalid_quads },
-                         { "quads_outside_45_135_not_forced", f.bad_angle_quads },
-                         { "quads_outside_45_135_not_forced_by_layer", by_layer(f.bad_angle_quads_by_layer) },
-                         { "refinement_requests", f.refinement_requests },
-                         { "seconds", f.seconds } });
-    report["rounds"] = rounds;
-    const auto [rounds_end, why] = rounds_end_text(mesher);
-    report["buffer"]["rounds_end"] = rounds_end;
-    if(b.bad_angle_quads > 0)
-      std::cerr << "quad-mesher: " << opt.input << ": warning: " << b.bad_angle_quads
-                << " buffer quads have an angle outside [45, 135] that no input corner forces: " << why << "\n";
-  }
+  if(last >= QM::Stage::TEMPLATES)
+    add_buffer(opt, mesher, report);
   report["points_as_vertices"] = mesher.point_vertices().size();
   report["max_aspect_ratio_at_points"] = QM::max_aspect_ratio_around(mesh, mesher.point_vertices());
   report["quadtree_depth"] = tree.depth();
@@ -318,17 +343,61 @@ int run(const Options& opt)
                               { "cells_y", tree.root_cells_y() },
                               { "side", tree.root_side() },
                               { "origin", { tree.origin_x(), tree.origin_y() } } };
-  report["seconds"] = seconds;
+}
 
-  if(!opt.report.empty()) {
-    std::ofstream out(staged.add(opt.report));
-    out << report.dump(2) << "\n";
-    out.close();
-    if(!out) {
-      std::cerr << "quad-mesher: cannot write " << opt.report << "\n";
-      return 1;
-    }
+// Writes the report under its staged name, if one is asked for: false after printing why not.
+bool write_report(const Options& opt, const nlohmann::ordered_json& report, Staged_outputs& staged)
+{
+  if(opt.report.empty())
+    return true;
+  std::ofstream out(staged.add(opt.report));
+  out << report.dump(2) << "\n";
+  out.close();
+  if(!out) {
+    std::cerr << "quad-mesher: cannot write " << opt.report << "\n";
+    return false;
   }
+  return true;
+}
+
+template <class K>
+int run(const Options& opt)
+{
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  nlohmann::ordered_json report;
+  nlohmann::ordered_json seconds;
+
+  QM::Domain_2<K> domain;
+  if(!read_input(opt, domain, seconds))
+    return 1;
+
+  const QM::Stage last = stop_after_stage(opt, domain);
+  QM::Quadtree_mesher_2<K> mesher(domain, criteria_of<K>(opt, last));
+  if(opt.verbose) // as they end: a hard input can take minutes a round
+    mesher.set_round_observer([](const auto& f) { print_round(std::cerr, f); });
+  QM::Quad_mesh_2<typename K::Point_2> mesh = mesher.run(last);
+  if(mesher.number_of_merged_points() > 0)
+    std::cerr << "quad-mesher: " << opt.input << ": merged " << mesher.number_of_merged_points()
+              << " duplicate input point(s)\n";
+  add_stage_times(opt, mesher, seconds);
+
+  // runs past the clearance checked the whole mesh already (stage "check")
+  auto t = Clock::now();
+  const QM::Mesh_quality_2 quality = mesher.quality() ? *mesher.quality() : QM::compute_quality(mesh);
+  seconds["quality"] = seconds_since(t);
+
+  t = Clock::now();
+  Staged_outputs staged;
+  if(!write_outputs(opt, domain, mesh, staged))
+    return 1;
+  seconds["write"] = seconds_since(t);
+  seconds["total"] = seconds_since(start);
+
+  fill_report(opt, domain, last, mesher, mesh, quality, report);
+  report["seconds"] = seconds;
+  if(!write_report(opt, report, staged))
+    return 1;
   if(const std::string failed = staged.commit(); !failed.empty()) {
     std::cerr << "quad-mesher: cannot write " << failed << "\n";
     return 1;
@@ -337,7 +406,7 @@ int run(const Options& opt)
     for(const std::string& out : opt.outputs) std::cerr << "wrote " << out << "\n";
   std::cout << quality.number_of_quads << " quads, " << quality.number_of_vertices
             << " vertices, angles [" << quality.min_angle << ", " << quality.max_angle
-            << "] deg, quadtree depth " << tree.depth() << ", " << seconds["total"].get<double>()
+            << "] deg, quadtree depth " << mesher.quadtree().depth() << ", " << seconds["total"].get<double>()
             << " s\n";
   if(!quality.is_valid()) {
     std::cerr << "quad-mesher: the mesh failed its validity check (see the report)\n";

@@ -274,7 +274,7 @@ TEST(MeshQuality2, NearDuplicatePairsMatchAllPairs)
     return double(state >> 11) / double(1ULL << 53);
   };
   for(int k = 0; k < 300; ++k) {
-    const Point_2d& base = pts[std::size_t(uniform() * 900)];
+    const Point_2d base = pts[std::size_t(uniform() * 900)]; // a copy: push_back may reallocate pts
     const double dx = (uniform() - 0.5) * 3 * tol, dy = (uniform() - 0.5) * 3 * tol;
     pts.push_back(Point_2d{ base.x + dx, base.y + dy });
     if(k % 3 == 0) pts.push_back(Point_2d{ base.x + dx, base.y + dy + (k % 2 ? tol : 2 * tol) });

@@ -261,6 +261,47 @@ TEST(Quadtree_mesher_2, copies_into_a_surface_mesh)
   EXPECT_TRUE(sm.is_valid(false));
 }
 
+// The one-call function meshes a domain through every stage, as the tool does by default (it
+// stopped after the points stage and returned the bounding grid, of area 64 here).
+TEST(Quadtree_mesher_2, make_quad_mesh_2_meshes_a_domain_up_to_its_boundary)
+{
+  Domain d;
+  d.points = { K::Point_2(0, 0),     K::Point_2(4, 0),     K::Point_2(4, 4),     K::Point_2(0, 4),
+               K::Point_2(1.5, 1.5), K::Point_2(2.5, 1.5), K::Point_2(2.5, 2.5), K::Point_2(1.5, 2.5) };
+  d.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 4, 5 }, { 5, 6 }, { 6, 7 }, { 7, 4 } };
+  d.holes = { K::Point_2(2, 2) };
+  EXPECT_EQ(QM::last_stage(d), QM::Stage::BUFFER2);
+  const auto mesh = QM::make_quad_mesh_2(d);
+  ASSERT_GT(mesh.quads.size(), 0u);
+  // in the closed square, and not strictly inside the hole
+  auto in_domain = [](const K::Point_2& p) {
+    const bool in_square = p.x() >= 0 && p.x() <= 4 && p.y() >= 0 && p.y() <= 4;
+    const bool in_hole = p.x() > 1.5 && p.x() < 2.5 && p.y() > 1.5 && p.y() < 2.5;
+    return in_square && !in_hole;
+  };
+  double area = 0;
+  std::size_t outside = 0;
+  for(std::size_t q = 0; q < mesh.quads.size(); ++q) {
+    area += qm2_checks::signed_area(mesh, q);
+    const auto& c = mesh.quads[q];
+    const K::Point_2 centroid = CGAL::centroid(mesh.points[c[0]], mesh.points[c[1]], mesh.points[c[2]], mesh.points[c[3]]);
+    bool inside = in_domain(centroid);
+    for(int k = 0; k < 4; ++k) inside = inside && in_domain(mesh.points[c[k]]);
+    outside += inside ? 0 : 1;
+  }
+  EXPECT_EQ(outside, 0u) << "quads with a corner or the centroid outside the domain";
+  EXPECT_NEAR(area, 15, 1e-9 * 15);
+  const QM::Mesh_quality_2 quality = QM::compute_quality(mesh);
+  EXPECT_TRUE(quality.is_valid());
+  EXPECT_EQ(quality.number_of_boundary_loops, 2u);
+  EXPECT_GE(quality.min_angle, 45 - 1e-6);
+  EXPECT_LE(quality.max_angle, 135 + 1e-6);
+  // a point cloud's last stage is the points stage
+  Domain cloud;
+  cloud.points = d.points;
+  EXPECT_EQ(QM::last_stage(cloud), QM::Stage::POINTS);
+}
+
 TEST(Quadtree_mesher_2, stage_timings_are_recorded)
 {
   Domain d = random_domain(10, 2);
@@ -271,7 +312,7 @@ TEST(Quadtree_mesher_2, stage_timings_are_recorded)
     names.push_back(t.first);
     EXPECT_GE(t.second, 0.0);
   }
-  EXPECT_EQ(names, (std::vector<std::string>{ "refine", "balance", "templates", "points" }));
+  EXPECT_EQ(names, (std::vector<std::string>{ "refine", "balance", "refinement_templates", "points" }));
 }
 
 TEST(Quadtree_mesher_2, single_point_and_collinear_points)

@@ -998,9 +998,11 @@ TEST(Buffer_layers, an_invalid_round_refines_at_its_invalid_quads_only)
   const Figures f = check_whole_domain(d, m, "disc with thin elliptic holes");
   expect_angles_45_135(f, "disc with thin elliptic holes");
   EXPECT_LT(f.quads, 100000u);
-  for(const auto& r : mesher.round_figures())
-    if(!r.valid && r.invalid_quads > 0)
+  for(const auto& r : mesher.round_figures()) {
+    if(!r.valid && r.invalid_quads > 0) {
       EXPECT_LE(r.refinement_requests, 8 * r.invalid_quads) << "round " << r.round;
+    }
+  }
 }
 
 // The rounds say why they ended with quads out: the first L above, at most 6 levels deep

@@ -89,7 +89,7 @@ TEST(Insert_points, tent_bounds_hold_over_every_displacement)
     for(int sx = -steps; sx <= steps; ++sx)
       for(int sy = -steps; sy <= steps; ++sy) {
         std::vector<K::Point_2> p = { K::Point_2(1 + reach * sx / steps, 1 + reach * sy / steps) };
-        QM::internal::Point_anchor a{ 0, 4, radius, 8, 8 }; // W = (1, 1)
+        QM::Point_anchor a{ 0, 4, radius, 8, 8 }; // W = (1, 1)
         Mesh mesh = base;
         QM::internal::move_anchors(tree, mesh, keys, { a }, p);
         auto r = qm2_checks::angle_range(mesh);

@@ -80,7 +80,7 @@ TEST(quad_mesher_cli, meshes_lake_superior_with_every_output_and_a_report)
   EXPECT_EQ(report["kernel"], kernel_name);
   EXPECT_EQ(report["input"]["points"].get<int>(), 518);
   EXPECT_EQ(report["input"]["segments"].get<int>(), 518);
-  for(const char* stage : { "read", "refine", "balance", "templates", "quality", "write", "total" })
+  for(const char* stage : { "read", "refine", "balance", "refinement_templates", "quality", "write", "total" })
     EXPECT_TRUE(report["seconds"].contains(stage)) << stage;
   EXPECT_EQ(report["angle_histogram_5deg"].size(), 72u);
 }
@@ -367,7 +367,7 @@ TEST(quad_mesher_cli, help_lists_every_option_and_verbose_prints_stages)
     EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
   r = run(lake + " -o " + scratch("v.off").string() + " --verbose");
   EXPECT_EQ(r.status, 0);
-  for(const char* stage : { "refine", "balance", "templates", "points" })
+  for(const char* stage : { "stage refine:", "stage balance:", "stage refinement_templates:", "stage points:" })
     EXPECT_NE(r.err.find(stage), std::string::npos) << stage;
 }
 

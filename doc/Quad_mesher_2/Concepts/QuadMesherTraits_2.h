@@ -23,7 +23,7 @@ traits (every `..._object()` in `include/`):
   `Compare_x_2`, `Construct_segment_2`, `Construct_bbox_2` and
   `Compare_squared_distance_2` (criterion 3).
 
-The narrow-region sizing (`internal/boundary_sizing.h`) needs only the coordinates and
+The narrow-region sizing (`internal/narrow_regions.h`) needs only the coordinates and
 `Construct_point_2`: it works in `double`. A test (`test/test_traits_and_headers.cpp`)
 compiles and runs the mesher with an archetype that provides nothing else.
 

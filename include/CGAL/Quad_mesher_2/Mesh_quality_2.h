@@ -19,6 +19,7 @@
 #include <cstring>
 #include <limits>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -314,97 +315,73 @@ std::size_t count_hanging_nodes(const std::vector<Point_2d>& pts,
   return count;
 }
 
-/// `compute_quality()`, and with `where` the places of its near-duplicate vertices (one of
-/// each pair) and hanging nodes, which a mesher can refine
-template <class Point_2>
-Mesh_quality_2 compute_quality(const Quad_mesh_2<Point_2>& mesh, std::vector<Point_2d>* where);
-
-} // namespace internal
-
-/// \ingroup PkgQuadMesher2Ref
-/// Computes the shape and validity statistics of `mesh` (see `Mesh_quality_2`).
-/// Runs in roughly linear time: about 0.35 s for 10^6 quads.
-template <class Point_2>
-Mesh_quality_2 compute_quality(const Quad_mesh_2<Point_2>& mesh)
+/// A corner's angle is a function of its edges' cross and dot products, and a quadtree's mesh
+/// repeats a few such pairs (its squares and kites at each size) by the hundred thousand: a
+/// small cache before atan2, keyed by the pairs' bits (so +0 and -0 differ, as atan2's results
+/// do), gives the same angles at a fraction of the cost.
+class Corner_angle_cache
 {
-  return internal::compute_quality(mesh, nullptr);
-}
+public:
+  /// the interior angle (degrees) at `p` between the edges to `next` and to `prev`
+  double operator()(const Point_2d& prev, const Point_2d& p, const Point_2d& next)
+  {
+    const Point_2d e_next = minus_2d(next, p);
+    const Point_2d e_prev = minus_2d(prev, p);
+    const double cross = cross_2d(e_next, e_prev), dot = dot_2d(e_next, e_prev);
+    std::uint64_t c, d;
+    std::memcpy(&c, &cross, sizeof c);
+    std::memcpy(&d, &dot, sizeof d);
+    Entry& e = m_entries[((c ^ (d * 0x9e3779b97f4a7c15ULL)) * 0xbf58476d1ce4e5b9ULL) >> 54];
+    if(e.angle < 0 || e.cross != c || e.dot != d)
+      e = Entry{ c, d, angle_degrees(cross, dot) };
+    return e.angle;
+  }
 
-template <class Point_2>
-Mesh_quality_2 internal::compute_quality(const Quad_mesh_2<Point_2>& mesh, std::vector<Point_2d>* where)
-{
-  using internal::Point_2d;
-  const std::size_t np = mesh.points.size();
-  const std::size_t nq = mesh.quads.size();
-  const double slack = 1e-7;
-  const double sin_tol = 1e-12;
-
-  Mesh_quality_2 r;
-  r.number_of_quads = nq;
-  r.number_of_vertices = np;
-
-  std::vector<Point_2d> pts;
-  pts.reserve(np);
-  for(const Point_2& p : mesh.points)
-    pts.push_back(internal::to_point_2d(p));
-
-  // Per-quad shape measures.
-  std::vector<char> skip(nq, 0);
-  std::vector<char> used(np, 0);
-  double min_a = (std::numeric_limits<double>::max)(), max_a = -min_a, sum_a = 0;
-  std::size_t n_angles = 0, n_45 = 0, n_60 = 0;
-  double min_ar = (std::numeric_limits<double>::max)(), max_ar = 0, sum_ar = 0;
-  std::size_t n_ar = 0;
-  double min_sj = (std::numeric_limits<double>::max)(), sum_sj = 0;
-  std::size_t n_sj = 0;
-  // A corner's angle is a function of its edges' cross and dot products, and a quadtree's
-  // mesh repeats a few such pairs (its squares and kites at each size) by the hundred
-  // thousand: a small cache before atan2, keyed by the pairs' bits (so +0 and -0 differ, as
-  // atan2's results do), gives the same angles at a fraction of the cost.
-  struct Angle_entry
+private:
+  struct Entry
   {
     std::uint64_t cross, dot;
     double angle;
   };
-  std::vector<Angle_entry> angle_cache(1024, Angle_entry{ 0, 0, -1 }); // angle -1: empty
-  auto corner_angle = [&](const Point_2d& prev, const Point_2d& p, const Point_2d& next) {
-    const Point_2d e_next = internal::minus_2d(next, p);
-    const Point_2d e_prev = internal::minus_2d(prev, p);
-    const double cross = internal::cross_2d(e_next, e_prev), dot = internal::dot_2d(e_next, e_prev);
-    std::uint64_t c, d;
-    std::memcpy(&c, &cross, sizeof c);
-    std::memcpy(&d, &dot, sizeof d);
-    Angle_entry& e = angle_cache[((c ^ (d * 0x9e3779b97f4a7c15ULL)) * 0xbf58476d1ce4e5b9ULL) >> 54];
-    if(e.angle < 0 || e.cross != c || e.dot != d)
-      e = Angle_entry{ c, d, internal::angle_degrees(cross, dot) };
-    return e.angle;
-  };
+  std::vector<Entry> m_entries = std::vector<Entry>(1024, Entry{ 0, 0, -1 }); // angle -1: empty
+};
 
-  for(std::size_t qi = 0; qi < nq; ++qi) {
-    const auto& q = mesh.quads[qi];
+/// The per-quad shape measures of `compute_quality()`: each quad is added in turn, marking its
+/// vertices used; `finish()` writes the statistics. Quads with an index out of range are
+/// counted degenerate and marked in `skip`, for the edge table.
+class Quad_shape_statistics
+{
+public:
+  Quad_shape_statistics(const std::vector<Point_2d>& pts, Mesh_quality_2& r)
+    : m_pts(pts), m_r(r), m_used(pts.size(), 0)
+  {}
+
+  void add(const std::array<std::size_t, 4>& q, char& skip)
+  {
+    const std::size_t np = m_pts.size();
     bool out_of_range = false;
     for(int k = 0; k < 4; ++k)
       out_of_range = out_of_range || q[k] >= np;
     if(out_of_range) {
-      skip[qi] = 1;
-      ++r.number_of_degenerate_quads;
+      skip = 1;
+      ++m_r.number_of_degenerate_quads;
       for(int k = 0; k < 4; ++k)
         if(q[k] < np)
-          used[q[k]] = 1;
-      continue;
+          m_used[q[k]] = 1;
+      return;
     }
     bool degenerate = false;
     for(int k = 0; k < 4; ++k) {
-      used[q[k]] = 1;
+      m_used[q[k]] = 1;
       for(int l = k + 1; l < 4; ++l)
         degenerate = degenerate || q[k] == q[l];
     }
-    const std::array<Point_2d, 4> g = {pts[q[0]], pts[q[1]], pts[q[2]], pts[q[3]]};
-    const std::array<double, 4> len = internal::quad_edge_lengths(g);
+    const std::array<Point_2d, 4> g = { m_pts[q[0]], m_pts[q[1]], m_pts[q[2]], m_pts[q[3]] };
+    const std::array<double, 4> len = quad_edge_lengths(g);
     std::array<double, 4> ang;
     for(int k = 0; k < 4; ++k)
-      ang[k] = corner_angle(g[(k + 3) % 4], g[k], g[(k + 1) % 4]);
-    const std::array<double, 4> sj = internal::quad_corner_scaled_jacobians(g, len);
+      ang[k] = m_angle(g[(k + 3) % 4], g[k], g[(k + 1) % 4]);
+    const std::array<double, 4> sj = quad_corner_scaled_jacobians(g, len);
 
     bool inverted = false;
     double quad_sj = 1;
@@ -415,60 +392,95 @@ Mesh_quality_2 internal::compute_quality(const Quad_mesh_2<Point_2>& mesh, std::
         degenerate = true;
       quad_sj = (std::min)(quad_sj, sj[k]);
       // Corner k lies between edges k-1 and k.
-      if(len[k] > 0 && len[(k + 3) % 4] > 0) {
-        const double a = ang[k];
-        min_a = (std::min)(min_a, a);
-        max_a = (std::max)(max_a, a);
-        sum_a += a;
-        ++n_angles;
-        std::size_t bin = std::size_t((std::max)(0.0, std::floor((a + slack) / 5.0)));
-        ++r.angle_histogram[(std::min)(bin, std::size_t(71))];
-        if(a >= 45 - slack && a <= 135 + slack)
-          ++n_45;
-        if(a >= 60 - slack && a <= 120 + slack)
-          ++n_60;
-      }
+      if(len[k] > 0 && len[(k + 3) % 4] > 0)
+        add_angle(ang[k]);
     }
-    const double lo = (std::min)((std::min)(len[0], len[1]), (std::min)(len[2], len[3]));
-    const double hi = (std::max)((std::max)(len[0], len[1]), (std::max)(len[2], len[3]));
-    if(lo > 0) {
-      const double ar = hi / lo;
-      min_ar = (std::min)(min_ar, ar);
-      max_ar = (std::max)(max_ar, ar);
-      sum_ar += ar;
-      ++n_ar;
-    } else {
-      degenerate = true;
-    }
-    min_sj = (std::min)(min_sj, quad_sj);
-    sum_sj += quad_sj;
-    ++n_sj;
+    degenerate = !add_aspect_ratio(len) || degenerate;
+    m_min_sj = (std::min)(m_min_sj, quad_sj);
+    m_sum_sj += quad_sj;
+    ++m_n_sj;
     if(inverted)
-      ++r.number_of_inverted_quads;
+      ++m_r.number_of_inverted_quads;
     if(degenerate)
-      ++r.number_of_degenerate_quads;
-  }
-  if(n_angles > 0) {
-    r.min_angle = min_a;
-    r.max_angle = max_a;
-    r.mean_angle = sum_a / double(n_angles);
-    r.share_in_45_135 = double(n_45) / double(n_angles);
-    r.share_in_60_120 = double(n_60) / double(n_angles);
-  }
-  if(n_ar > 0) {
-    r.min_aspect_ratio = min_ar;
-    r.max_aspect_ratio = max_ar;
-    r.mean_aspect_ratio = sum_ar / double(n_ar);
-  }
-  if(n_sj > 0) {
-    r.min_scaled_jacobian = min_sj;
-    r.mean_scaled_jacobian = sum_sj / double(n_sj);
+      ++m_r.number_of_degenerate_quads;
   }
 
-  // Unused vertices and the bounding box of the used ones.
-  Point_2d lo{0, 0}, hi{0, 0};
+  void finish()
+  {
+    if(m_n_angles > 0) {
+      m_r.min_angle = m_min_a;
+      m_r.max_angle = m_max_a;
+      m_r.mean_angle = m_sum_a / double(m_n_angles);
+      m_r.share_in_45_135 = double(m_n_45) / double(m_n_angles);
+      m_r.share_in_60_120 = double(m_n_60) / double(m_n_angles);
+    }
+    if(m_n_ar > 0) {
+      m_r.min_aspect_ratio = m_min_ar;
+      m_r.max_aspect_ratio = m_max_ar;
+      m_r.mean_aspect_ratio = m_sum_ar / double(m_n_ar);
+    }
+    if(m_n_sj > 0) {
+      m_r.min_scaled_jacobian = m_min_sj;
+      m_r.mean_scaled_jacobian = m_sum_sj / double(m_n_sj);
+    }
+  }
+
+  /// by vertex: 1 if some quad uses it
+  const std::vector<char>& used() const { return m_used; }
+
+private:
+  static constexpr double slack = 1e-7;
+  static constexpr double sin_tol = 1e-12;
+
+  void add_angle(double a)
+  {
+    m_min_a = (std::min)(m_min_a, a);
+    m_max_a = (std::max)(m_max_a, a);
+    m_sum_a += a;
+    ++m_n_angles;
+    std::size_t bin = std::size_t((std::max)(0.0, std::floor((a + slack) / 5.0)));
+    ++m_r.angle_histogram[(std::min)(bin, std::size_t(71))];
+    if(a >= 45 - slack && a <= 135 + slack)
+      ++m_n_45;
+    if(a >= 60 - slack && a <= 120 + slack)
+      ++m_n_60;
+  }
+
+  // false if an edge has zero length (no aspect ratio)
+  bool add_aspect_ratio(const std::array<double, 4>& len)
+  {
+    const double lo = (std::min)((std::min)(len[0], len[1]), (std::min)(len[2], len[3]));
+    const double hi = (std::max)((std::max)(len[0], len[1]), (std::max)(len[2], len[3]));
+    if(!(lo > 0))
+      return false;
+    const double ar = hi / lo;
+    m_min_ar = (std::min)(m_min_ar, ar);
+    m_max_ar = (std::max)(m_max_ar, ar);
+    m_sum_ar += ar;
+    ++m_n_ar;
+    return true;
+  }
+
+  const std::vector<Point_2d>& m_pts;
+  Mesh_quality_2& m_r;
+  std::vector<char> m_used;
+  Corner_angle_cache m_angle;
+  double m_min_a = (std::numeric_limits<double>::max)(), m_max_a = -(std::numeric_limits<double>::max)(), m_sum_a = 0;
+  std::size_t m_n_angles = 0, m_n_45 = 0, m_n_60 = 0;
+  double m_min_ar = (std::numeric_limits<double>::max)(), m_max_ar = 0, m_sum_ar = 0;
+  std::size_t m_n_ar = 0;
+  double m_min_sj = (std::numeric_limits<double>::max)(), m_sum_sj = 0;
+  std::size_t m_n_sj = 0;
+};
+
+/// Counts the unused vertices into `r`; returns the bounding box of the used ones (lo, hi),
+/// (0, 0) to (0, 0) if none is.
+inline std::pair<Point_2d, Point_2d> count_unused_vertices(const std::vector<Point_2d>& pts,
+                                                           const std::vector<char>& used, Mesh_quality_2& r)
+{
+  Point_2d lo{ 0, 0 }, hi{ 0, 0 };
   bool first = true;
-  for(std::size_t v = 0; v < np; ++v) {
+  for(std::size_t v = 0; v < pts.size(); ++v) {
     if(!used[v]) {
       ++r.number_of_unused_vertices;
       continue;
@@ -484,28 +496,37 @@ Mesh_quality_2 internal::compute_quality(const Quad_mesh_2<Point_2>& mesh, std::
       hi.y = (std::max)(hi.y, p.y);
     }
   }
+  return { lo, hi };
+}
 
-  // Duplicate vertices: the near-duplicate sweep's sort counts them among the used vertices,
-  // which are all of them in a mesher's output; otherwise sort all by coordinates.
+/// Counts the duplicate and near-duplicate vertices into `r`. The near-duplicate sweep's sort
+/// counts the duplicates among the used vertices, which are all of them in a mesher's output;
+/// otherwise all are sorted by coordinates.
+inline void count_duplicate_vertices(const std::vector<Point_2d>& pts, const std::vector<char>& used,
+                                     const Point_2d& lo, const Point_2d& hi, Mesh_quality_2& r,
+                                     std::vector<Point_2d>* where)
+{
   std::size_t used_duplicates = 0;
-  r.number_of_near_duplicate_vertices = internal::count_near_duplicate_pairs(
-    pts, used, lo, 1e-9 * internal::length_2d(internal::minus_2d(hi, lo)), &used_duplicates, where);
+  r.number_of_near_duplicate_vertices =
+    count_near_duplicate_pairs(pts, used, lo, 1e-9 * length_2d(minus_2d(hi, lo)), &used_duplicates, where);
   if(r.number_of_unused_vertices == 0) {
     r.number_of_duplicate_vertices = used_duplicates;
-  } else {
-    std::vector<Point_2d> sorted(pts);
-    std::sort(sorted.begin(), sorted.end(), [](const Point_2d& a, const Point_2d& b) {
-      return a.x < b.x || (a.x == b.x && a.y < b.y);
-    });
-    for(std::size_t i = 1; i < np; ++i)
-      if(sorted[i].x == sorted[i - 1].x && sorted[i].y == sorted[i - 1].y)
-        ++r.number_of_duplicate_vertices;
+    return;
   }
+  std::vector<Point_2d> sorted(pts);
+  std::sort(sorted.begin(), sorted.end(), [](const Point_2d& a, const Point_2d& b) {
+    return a.x < b.x || (a.x == b.x && a.y < b.y);
+  });
+  for(std::size_t i = 1; i < pts.size(); ++i)
+    if(sorted[i].x == sorted[i - 1].x && sorted[i].y == sorted[i - 1].y)
+      ++r.number_of_duplicate_vertices;
+}
 
-  // Edge usage: non-manifold edges and boundary (used-once) halfedges.
-  const internal::Quality_edge_table table(mesh.quads, skip, np);
+/// Counts the non-manifold edges into `r`; returns the boundary (used-once) halfedges.
+inline std::vector<std::size_t> boundary_halfedges(const Quality_edge_table& table, Mesh_quality_2& r)
+{
   std::vector<std::size_t> boundary;
-  for(std::size_t v = 0; v < np; ++v) {
+  for(std::size_t v = 0; v < table.number_of_points(); ++v) {
     std::size_t i = table.bucket_begin(v);
     const std::size_t end = table.bucket_end(v);
     while(i < end) {
@@ -525,69 +546,109 @@ Mesh_quality_2 internal::compute_quality(const Quad_mesh_2<Point_2>& mesh, std::
       i = j;
     }
   }
+  return boundary;
+}
 
-  // Boundary loops: chain used-once halfedges head to tail.
+/// The number of loops the `boundary` halfedges of `nq` quads make, chained head to tail.
+inline std::size_t count_boundary_loops(const Quality_edge_table& table, const std::vector<std::size_t>& boundary,
+                                        const std::vector<Point_2d>& pts, std::size_t nq)
+{
+  const std::size_t np = pts.size();
+  std::vector<std::size_t> out_offsets(np + 1, 0);
+  for(std::size_t h : boundary)
+    ++out_offsets[table.source(h) + 1];
+  for(std::size_t v = 0; v < np; ++v)
+    out_offsets[v + 1] += out_offsets[v];
+  std::vector<std::size_t> out(boundary.size());
   {
-    std::vector<std::size_t> out_offsets(np + 1, 0);
+    std::vector<std::size_t> fill(out_offsets.begin(), out_offsets.end() - 1);
     for(std::size_t h : boundary)
-      ++out_offsets[table.source(h) + 1];
-    for(std::size_t v = 0; v < np; ++v)
-      out_offsets[v + 1] += out_offsets[v];
-    std::vector<std::size_t> out(boundary.size());
-    {
-      std::vector<std::size_t> fill(out_offsets.begin(), out_offsets.end() - 1);
-      for(std::size_t h : boundary)
-        out[fill[table.source(h)]++] = h;
+      out[fill[table.source(h)]++] = h;
+  }
+  std::vector<char> visited(4 * nq, 0);
+  const std::size_t npos = (std::numeric_limits<std::size_t>::max)();
+  // At a vertex where several boundary loops meet, leave through the outgoing boundary
+  // halfedge met first when turning counter-clockwise from the incoming one's reverse:
+  // the outside lies on the right of both.
+  auto turn = [&](std::size_t h) -> std::size_t {
+    const std::size_t v = table.target(h);
+    const Point_2d back = minus_2d(pts[table.source(h)], pts[v]);
+    std::size_t best = npos;
+    double best_angle = 0;
+    for(std::size_t i = out_offsets[v]; i < out_offsets[v + 1]; ++i) {
+      const std::size_t o = out[i];
+      const Point_2d d = minus_2d(pts[table.target(o)], pts[v]);
+      double a = std::atan2(cross_2d(back, d), dot_2d(back, d));
+      if(a <= 0)
+        a += 2 * 3.14159265358979323846;
+      if(best == npos || a < best_angle) {
+        best = o;
+        best_angle = a;
+      }
     }
-    std::vector<char> visited(4 * nq, 0);
-    const std::size_t npos = (std::numeric_limits<std::size_t>::max)();
-    // At a vertex where several boundary loops meet, leave through the outgoing boundary
-    // halfedge met first when turning counter-clockwise from the incoming one's reverse:
-    // the outside lies on the right of both.
-    auto turn = [&](std::size_t h) -> std::size_t {
+    return best;
+  };
+  std::size_t loops = 0;
+  for(std::size_t start : boundary) {
+    if(visited[start])
+      continue;
+    ++loops;
+    for(std::size_t h = start;;) {
+      visited[h] = 1;
       const std::size_t v = table.target(h);
-      const Point_2d back = internal::minus_2d(pts[table.source(h)], pts[v]);
-      std::size_t best = npos;
-      double best_angle = 0;
-      for(std::size_t i = out_offsets[v]; i < out_offsets[v + 1]; ++i) {
-        const std::size_t o = out[i];
-        const Point_2d d = internal::minus_2d(pts[table.target(o)], pts[v]);
-        double a = std::atan2(internal::cross_2d(back, d), internal::dot_2d(back, d));
-        if(a <= 0)
-          a += 2 * 3.14159265358979323846;
-        if(best == npos || a < best_angle) {
-          best = o;
-          best_angle = a;
-        }
-      }
-      return best;
-    };
-    for(std::size_t start : boundary) {
-      if(visited[start])
-        continue;
-      ++r.number_of_boundary_loops;
-      std::size_t h = start;
-      while(true) {
-        visited[h] = 1;
-        const std::size_t v = table.target(h);
-        std::size_t next = npos;
-        if(out_offsets[v + 1] - out_offsets[v] == 1) {
-          next = out[out_offsets[v]];
-        } else {
-          next = turn(h);
-        }
-        if(next == npos || visited[next])
-          break;
-        h = next;
-      }
+      const std::size_t next = out_offsets[v + 1] - out_offsets[v] == 1 ? out[out_offsets[v]] : turn(h);
+      if(next == npos || visited[next])
+        break;
+      h = next;
     }
   }
+  return loops;
+}
+
+/// `compute_quality()`, and with `where` the places of its near-duplicate vertices (one of
+/// each pair) and hanging nodes, which a mesher can refine
+template <class Point_2>
+Mesh_quality_2 compute_quality(const Quad_mesh_2<Point_2>& mesh, std::vector<Point_2d>* where);
+
+} // namespace internal
+
+/// \ingroup PkgQuadMesher2Ref
+/// Computes the shape and validity statistics of `mesh` (see `Mesh_quality_2`).
+/// Runs in roughly linear time: about 0.35 s for 10^6 quads.
+template <class Point_2>
+Mesh_quality_2 compute_quality(const Quad_mesh_2<Point_2>& mesh)
+{
+  return internal::compute_quality(mesh, nullptr);
+}
+
+template <class Point_2>
+Mesh_quality_2 internal::compute_quality(const Quad_mesh_2<Point_2>& mesh, std::vector<Point_2d>* where)
+{
+  Mesh_quality_2 r;
+  r.number_of_quads = mesh.quads.size();
+  r.number_of_vertices = mesh.points.size();
+  std::vector<Point_2d> pts;
+  pts.reserve(mesh.points.size());
+  for(const Point_2& p : mesh.points)
+    pts.push_back(to_point_2d(p));
+
+  std::vector<char> skip(mesh.quads.size(), 0);
+  Quad_shape_statistics shapes(pts, r);
+  for(std::size_t q = 0; q < mesh.quads.size(); ++q)
+    shapes.add(mesh.quads[q], skip[q]);
+  shapes.finish();
+  const std::vector<char>& used = shapes.used();
+
+  const auto [lo, hi] = count_unused_vertices(pts, used, r);
+  count_duplicate_vertices(pts, used, lo, hi, r, where);
+
+  const Quality_edge_table table(mesh.quads, skip, pts.size());
+  const std::vector<std::size_t> boundary = boundary_halfedges(table, r);
+  r.number_of_boundary_loops = count_boundary_loops(table, boundary, pts, mesh.quads.size());
 
   // Hanging nodes: used vertices in the interior of a used-once edge of another quad.
-  const double diag = internal::length_2d(internal::minus_2d(hi, lo));
-  r.number_of_hanging_nodes =
-    internal::count_hanging_nodes(pts, used, mesh.quads, boundary, 1e-9 * diag, where);
-
+  const double diag = length_2d(minus_2d(hi, lo));
+  r.number_of_hanging_nodes = count_hanging_nodes(pts, used, mesh.quads, boundary, 1e-9 * diag, where);
   return r;
 }
 

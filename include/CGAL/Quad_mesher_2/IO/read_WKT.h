@@ -397,15 +397,20 @@ bool find_hole_seed(const std::vector<std::vector<typename K::Point_2> >& rings,
   return false;
 }
 
-template <class K>
-bool wkt_to_domain(Wkt_data& data, const std::string& source, Domain_2<K>& out, std::string& msg)
+// how messages name a line of `source`
+inline std::string wkt_where(const std::string& source, std::size_t line)
 {
-  typedef typename K::Point_2 Point_2;
-  const K k;
-  auto where = [&](std::size_t line) { return source + ":" + std::to_string(line) + ": "; };
+  return source + ":" + std::to_string(line) + ": ";
+}
 
-  // Per-ring checks: closure, at least 3 distinct vertices, no repeated vertex, simplicity.
-  std::vector<std::vector<Point_2> > ring_points(data.rings.size());
+// Per-ring checks: closure, at least 3 distinct vertices, no repeated vertex, simplicity. Drops
+// each ring's closing point and gives its points in `ring_points`.
+template <class K>
+bool check_wkt_rings(Wkt_data& data, const std::string& source, std::vector<std::vector<typename K::Point_2> >& ring_points,
+                     const K& k, std::string& msg)
+{
+  auto where = [&](std::size_t line) { return wkt_where(source, line); };
+  ring_points.assign(data.rings.size(), {});
   for(std::size_t ri = 0; ri < data.rings.size(); ++ri) {
     Wkt_ring& r = data.rings[ri];
     // an open ring is an error, not closed for the user: that would add an edge they did not give
@@ -440,15 +445,26 @@ bool wkt_to_domain(Wkt_data& data, const std::string& source, Domain_2<K>& out, 
       return false;
     }
   }
+  return true;
+}
 
-  // Vertices: rings may touch at a vertex (they then share it); isolated points must be new.
+// The domain's vertices and segments, numbered from the rings and points of a WKT input, and
+// how later messages name them: vertex or edge i of its ring, from 1.
+struct Wkt_numbering
+{
   std::vector<std::array<double, 2> > xy;
   std::vector<std::size_t> lines;
-  std::unordered_map<std::array<double, 2>, std::size_t, Xy_hash> index;
   std::vector<std::array<std::size_t, 2> > segs;
   std::vector<std::size_t> seg_lines;
-  // how later messages name them: vertex or edge i of its ring, from 1
   std::vector<std::string> point_labels, segment_labels;
+};
+
+// Numbers the vertices: rings may touch at a vertex (they then share it); isolated points must
+// be new, and no two rings may share an edge.
+inline bool number_wkt_vertices(const Wkt_data& data, const std::string& source, Wkt_numbering& n, std::string& msg)
+{
+  auto where = [&](std::size_t line) { return wkt_where(source, line); };
+  std::unordered_map<std::array<double, 2>, std::size_t, Xy_hash> index;
   auto label = [](std::size_t i, const std::string& of, std::size_t line) {
     return std::to_string(i + 1) + " of " + of + " (line " + std::to_string(line) + ")";
   };
@@ -456,43 +472,48 @@ bool wkt_to_domain(Wkt_data& data, const std::string& source, Domain_2<K>& out, 
     std::vector<std::size_t> ids(r.xy.size());
     const std::string ring = r.describe();
     for(std::size_t i = 0; i < r.xy.size(); ++i) {
-      auto ins = index.emplace(r.xy[i], xy.size());
+      auto ins = index.emplace(r.xy[i], n.xy.size());
       if(ins.second) {
-        xy.push_back(r.xy[i]);
-        lines.push_back(r.lines[i]);
-        point_labels.push_back(label(i, ring, r.lines[i]));
+        n.xy.push_back(r.xy[i]);
+        n.lines.push_back(r.lines[i]);
+        n.point_labels.push_back(label(i, ring, r.lines[i]));
       }
       ids[i] = ins.first->second;
     }
     for(std::size_t i = 0; i < ids.size(); ++i) {
-      segs.push_back({ids[i], ids[(i + 1) % ids.size()]});
-      seg_lines.push_back(r.lines[i]);
-      segment_labels.push_back(label(i, ring, r.lines[i]));
+      n.segs.push_back({ids[i], ids[(i + 1) % ids.size()]});
+      n.seg_lines.push_back(r.lines[i]);
+      n.segment_labels.push_back(label(i, ring, r.lines[i]));
     }
   }
-  const std::size_t ring_vertices = xy.size();
+  const std::size_t ring_vertices = n.xy.size();
   for(std::size_t i = 0; i < data.points.size(); ++i) {
-    auto ins = index.emplace(data.points[i], xy.size());
+    auto ins = index.emplace(data.points[i], n.xy.size());
     if(!ins.second) {
       const std::size_t j = ins.first->second;
       msg = where(data.point_lines[i]) + "duplicate point: " + format_point(data.points[i][0], data.points[i][1]) +
             " (line " + std::to_string(data.point_lines[i]) + ") is already " +
-            (j < ring_vertices ? "a ring vertex" : "a point") + " (line " + std::to_string(lines[j]) + ")";
+            (j < ring_vertices ? "a ring vertex" : "a point") + " (line " + std::to_string(n.lines[j]) + ")";
       return false;
     }
-    xy.push_back(data.points[i]);
-    lines.push_back(data.point_lines[i]);
-    point_labels.push_back(label(i, "the points", data.point_lines[i]));
+    n.xy.push_back(data.points[i]);
+    n.lines.push_back(data.point_lines[i]);
+    n.point_labels.push_back(label(i, "the points", data.point_lines[i]));
   }
   std::size_t d1 = 0, d2 = 0;
-  if(find_duplicate_segment(segs, d1, d2)) {
-    const auto& s = segs[d2];
-    msg = where(seg_lines[d2]) + "duplicate segment: the edge from " + format_point(xy[s[0]][0], xy[s[0]][1]) + " to " +
-          format_point(xy[s[1]][0], xy[s[1]][1]) + " (line " + std::to_string(seg_lines[d2]) +
-          ") is also an edge of another ring (line " + std::to_string(seg_lines[d1]) + ")";
+  if(find_duplicate_segment(n.segs, d1, d2)) {
+    const auto& s = n.segs[d2];
+    msg = where(n.seg_lines[d2]) + "duplicate segment: the edge from " + format_point(n.xy[s[0]][0], n.xy[s[0]][1]) + " to " +
+          format_point(n.xy[s[1]][0], n.xy[s[1]][1]) + " (line " + std::to_string(n.seg_lines[d2]) +
+          ") is also an edge of another ring (line " + std::to_string(n.seg_lines[d1]) + ")";
     return false;
   }
+  return true;
+}
 
+template <class Point_2>
+std::vector<Bbox_2> ring_boxes(const std::vector<std::vector<Point_2> >& ring_points)
+{
   std::vector<Bbox_2> boxes;
   boxes.reserve(ring_points.size());
   for(const auto& R : ring_points) {
@@ -500,10 +521,19 @@ bool wkt_to_domain(Wkt_data& data, const std::string& source, Domain_2<K>& out, 
     for(const Point_2& q : R) b += q.bbox();
     boxes.push_back(b);
   }
-  // Polygons must not overlap (OGC): a polygon inside another's area, not in one of its holes,
-  // would become a hole of it by the nesting of the loops, and its area would be lost. Rings
-  // that cross are found by the domain's own checks; one vertex of an outer ring off the other
-  // polygon's rings tells whether it lies inside.
+  return boxes;
+}
+
+// Polygons must not overlap (OGC): a polygon inside another's area, not in one of its holes,
+// would become a hole of it by the nesting of the loops, and its area would be lost. Rings
+// that cross are found by the domain's own checks; one vertex of an outer ring off the other
+// polygon's rings tells whether it lies inside.
+template <class K>
+bool check_wkt_polygons_apart(const Wkt_data& data, const std::string& source,
+                              const std::vector<std::vector<typename K::Point_2> >& ring_points,
+                              const std::vector<Bbox_2>& boxes, const K& k, std::string& msg)
+{
+  typedef typename K::Point_2 Point_2;
   auto strictly_inside = [&](std::size_t ri, const Point_2& q) {
     return CGAL::bounded_side_2(ring_points[ri].begin(), ring_points[ri].end(), q, k) == CGAL::ON_BOUNDED_SIDE;
   };
@@ -527,7 +557,7 @@ bool wkt_to_domain(Wkt_data& data, const std::string& source, Domain_2<K>& out, 
       });
       if(in_a_hole) continue;
       const std::size_t i = std::size_t(probe - ring_points[b].begin());
-      msg = where(data.rings[b].lines[i]) + data.rings[b].describe() + " lies inside polygon " +
+      msg = wkt_where(source, data.rings[b].lines[i]) + data.rings[b].describe() + " lies inside polygon " +
             std::to_string(poly) + " (line " + std::to_string(data.rings[a].line) + "): its vertex " +
             format_point(data.rings[b].xy[i][0], data.rings[b].xy[i][1]) + " (line " +
             std::to_string(data.rings[b].lines[i]) + ") is in that polygon's area; polygons must not "
@@ -535,25 +565,47 @@ bool wkt_to_domain(Wkt_data& data, const std::string& source, Domain_2<K>& out, 
       return false;
     }
   }
+  return true;
+}
 
-  // Hole seeds, one per inner ring.
-  std::vector<Point_2> holes;
+// Hole seeds, one per inner ring.
+template <class K>
+bool wkt_hole_seeds(const Wkt_data& data, const std::string& source,
+                    const std::vector<std::vector<typename K::Point_2> >& ring_points, const std::vector<Bbox_2>& boxes,
+                    const K& k, std::vector<typename K::Point_2>& holes, std::string& msg)
+{
   for(std::size_t ri = 0; ri < data.rings.size(); ++ri) {
     if(data.rings[ri].index == 1) continue;
-    Point_2 seed;
+    typename K::Point_2 seed;
     if(!find_hole_seed(ring_points, boxes, ri, k, seed)) {
-      msg = where(data.rings[ri].line) + "cannot find a point strictly inside " + data.rings[ri].describe() +
+      msg = wkt_where(source, data.rings[ri].line) + "cannot find a point strictly inside " + data.rings[ri].describe() +
             " and outside every other ring (do rings cross each other?)";
       return false;
     }
     holes.push_back(seed);
   }
+  return true;
+}
 
-  append_points<K>(xy, out.points, k);
-  out.segments = std::move(segs);
+template <class K>
+bool wkt_to_domain(Wkt_data& data, const std::string& source, Domain_2<K>& out, std::string& msg)
+{
+  typedef typename K::Point_2 Point_2;
+  const K k;
+  std::vector<std::vector<Point_2> > ring_points;
+  Wkt_numbering numbering;
+  if(!check_wkt_rings(data, source, ring_points, k, msg) || !number_wkt_vertices(data, source, numbering, msg))
+    return false;
+  const std::vector<Bbox_2> boxes = ring_boxes(ring_points);
+  std::vector<Point_2> holes;
+  if(!check_wkt_polygons_apart(data, source, ring_points, boxes, k, msg) ||
+     !wkt_hole_seeds(data, source, ring_points, boxes, k, holes, msg))
+    return false;
+  append_points<K>(numbering.xy, out.points, k);
+  out.segments = std::move(numbering.segs);
   out.holes = std::move(holes);
-  out.point_labels = std::move(point_labels);
-  out.segment_labels = std::move(segment_labels);
+  out.point_labels = std::move(numbering.point_labels);
+  out.segment_labels = std::move(numbering.segment_labels);
   return true;
 }
 

@@ -20,13 +20,11 @@ namespace Quad_mesher_2 {
 namespace IO {
 namespace internal {
 
-/// Reads the sections of a `.poly` file after its vertex header. If the `.poly` lists 0
-/// vertices, `node_file` (may be empty) is the `.node` file holding them.
-template <class K>
-bool read_poly_text(Text_lines& r, const std::string& node_file, Domain_2<K>& out, std::string& msg)
+/// Reads the vertex section of a `.poly` file into `v`, `count` the number it lists: if 0, the
+/// vertices are read from `node_file` (may be empty: an error then).
+inline bool read_poly_vertices(Text_lines& r, const std::string& node_file, Vertex_list& v, long long& count,
+                               std::string& msg)
 {
-  Vertex_list v;
-  long long count = 0;
   if(!read_vertex_section(r, v, count, msg)) return false;
   if(count == 0) {
     if(node_file.empty()) {
@@ -44,10 +42,69 @@ bool read_poly_text(Text_lines& r, const std::string& node_file, Domain_2<K>& ou
   } else if(!check_duplicate_vertices(v, msg)) {
     return false;
   }
+  return true;
+}
+
+/// The lines of a section, numbered from `base`, and what they hold.
+template <class Item>
+struct Poly_section
+{
+  std::vector<Item> items;
+  std::vector<std::size_t> lines;
+  std::size_t base = 0;
+};
+
+/// Reads one segment line, `<index> <a> <b> [marker]`, with `markers` markers: its endpoints
+/// into `s`, 0-based.
+inline bool read_poly_segment(const Text_lines& r, const Vertex_list& v, long long markers, std::size_t header_line,
+                              std::array<std::size_t, 2>& s, std::string& msg)
+{
   const std::size_t nv = v.xy.size();
   const std::size_t base = v.base;
+  const std::size_t line_tokens = 3 + static_cast<std::size_t>(markers);
+  if(r.size() < 3) { msg = r.here() + "segment " + std::string(r[0]) + " needs two vertex indices (expected: index a b)"; return false; }
+  for(int e = 0; e < 2; ++e) {
+    long long a = 0;
+    if(!parse_integer(r[1 + e], a)) {
+      msg = r.here() + "expected an integer vertex index in segment " + std::string(r[0]) + ", found " + quote(r[1 + e]);
+      return false;
+    }
+    if(a < static_cast<long long>(base) || a >= static_cast<long long>(nv + base)) {
+      msg = r.here() + "segment " + std::string(r[0]) + " refers to vertex " + std::string(r[1 + e]) + ", but there are " +
+            std::to_string(nv) + " vertices (" + base_name(base) + "): out of range";
+      return false;
+    }
+    s[e] = static_cast<std::size_t>(a) - base;
+  }
+  if(r.size() > line_tokens) {
+    msg = r.here() + "unexpected text " + quote(r[line_tokens]) + " after segment " + std::string(r[0]) + " (the header announces " +
+          std::to_string(markers) + " marker(s))";
+    return false;
+  }
+  // The marker the header announces, as for the vertices (Triangle would default it to 0).
+  if(r.size() < line_tokens) {
+    msg = r.here() + "segment " + std::string(r[0]) + " has no boundary marker, but the segment header (line " +
+          std::to_string(header_line) + ") announces 1 marker";
+    return false;
+  }
+  long long m = 0;
+  if(r.size() == 4 && !parse_integer(r[3], m)) {
+    msg = r.here() + "expected an integer boundary marker of segment " + std::string(r[0]) + ", found " + quote(r[3]);
+    return false;
+  }
+  if(s[0] == s[1]) {
+    msg = r.here() + "segment " + std::string(r[0]) + " has zero length: both ends are vertex " + std::to_string(s[0] + base);
+    return false;
+  }
+  return true;
+}
 
-  // Segments: `<#segments> [<#boundary markers (0|1)>]`, then `<index> <a> <b> [marker]`.
+/// Reads the segment section: `<#segments> [<#boundary markers (0|1)>]`, then
+/// `<index> <a> <b> [marker]`.
+inline bool read_poly_segments(Text_lines& r, const Vertex_list& v, Poly_section<std::array<std::size_t, 2> >& segments,
+                               std::string& msg)
+{
+  const std::size_t base = v.base;
   if(!r.next()) { msg = r.where(r.end_line()) + "unexpected end of file: the segment header is missing"; return false; }
   const std::size_t seg_header_line = r.line();
   long long nseg = 0, nmark = 0;
@@ -58,76 +115,43 @@ bool read_poly_text(Text_lines& r, const std::string& node_file, Domain_2<K>& ou
   }
   if(r.size() > 2) { msg = r.here() + "unexpected text " + quote(r[2]) + " after the segment header"; return false; }
   const std::size_t ns = static_cast<std::size_t>(nseg);
-  std::vector<std::array<std::size_t, 2> > segs;
-  std::vector<std::size_t> seg_lines;
+  std::vector<std::array<std::size_t, 2> >& segs = segments.items;
+  std::vector<std::size_t>& seg_lines = segments.lines;
   const std::size_t cap = r.text().size() / 6 + 1;
   segs.reserve((std::min)(ns, cap));
   seg_lines.reserve((std::min)(ns, cap));
-  std::size_t seg_base = 0;
-  const std::size_t line_tokens = 3 + static_cast<std::size_t>(nmark);
   for(std::size_t i = 0; i < ns; ++i) {
-    if(!next_indexed_line(r, i, ns, seg_base, "segment", "segments", "the segment header", seg_header_line, false, msg))
+    if(!next_indexed_line(r, i, ns, segments.base, "segment", "segments", "the segment header", seg_header_line, false, msg))
       return false;
-    if(r.size() < 3) { msg = r.here() + "segment " + std::string(r[0]) + " needs two vertex indices (expected: index a b)"; return false; }
     std::array<std::size_t, 2> s;
-    for(int e = 0; e < 2; ++e) {
-      long long a = 0;
-      if(!parse_integer(r[1 + e], a)) {
-        msg = r.here() + "expected an integer vertex index in segment " + std::string(r[0]) + ", found " + quote(r[1 + e]);
-        return false;
-      }
-      if(a < static_cast<long long>(base) || a >= static_cast<long long>(nv + base)) {
-        msg = r.here() + "segment " + std::string(r[0]) + " refers to vertex " + std::string(r[1 + e]) + ", but there are " +
-              std::to_string(nv) + " vertices (" + base_name(base) + "): out of range";
-        return false;
-      }
-      s[e] = static_cast<std::size_t>(a) - base;
-    }
-    if(r.size() > line_tokens) {
-      msg = r.here() + "unexpected text " + quote(r[line_tokens]) + " after segment " + std::string(r[0]) + " (the header announces " +
-            std::to_string(nmark) + " marker(s))";
-      return false;
-    }
-    // The marker the header announces, as for the vertices (Triangle would default it to 0).
-    if(r.size() < line_tokens) {
-      msg = r.here() + "segment " + std::string(r[0]) + " has no boundary marker, but the segment header (line " +
-            std::to_string(seg_header_line) + ") announces 1 marker";
-      return false;
-    }
-    long long m = 0;
-    if(r.size() == 4 && !parse_integer(r[3], m)) {
-      msg = r.here() + "expected an integer boundary marker of segment " + std::string(r[0]) + ", found " + quote(r[3]);
-      return false;
-    }
-    if(s[0] == s[1]) {
-      msg = r.here() + "segment " + std::string(r[0]) + " has zero length: both ends are vertex " + std::to_string(s[0] + base);
-      return false;
-    }
+    if(!read_poly_segment(r, v, nmark, seg_header_line, s, msg)) return false;
     segs.push_back(s);
     seg_lines.push_back(r.line());
   }
   std::size_t d1 = 0, d2 = 0;
   if(find_duplicate_segment(segs, d1, d2)) {
-    msg = r.where(seg_lines[d2]) + "duplicate segment: segment " + std::to_string(d2 + seg_base) + " (line " +
-          std::to_string(seg_lines[d2]) + ") and segment " + std::to_string(d1 + seg_base) + " (line " +
+    msg = r.where(seg_lines[d2]) + "duplicate segment: segment " + std::to_string(d2 + segments.base) + " (line " +
+          std::to_string(seg_lines[d2]) + ") and segment " + std::to_string(d1 + segments.base) + " (line " +
           std::to_string(seg_lines[d1]) + ") both join vertices " + std::to_string(segs[d2][0] + base) + " and " +
           std::to_string(segs[d2][1] + base);
     return false;
   }
+  return true;
+}
 
-  // Holes: `<#holes>`, then `<index> <x> <y>`.
+/// Reads the hole section: `<#holes>`, then `<index> <x> <y>`.
+inline bool read_poly_holes(Text_lines& r, Poly_section<std::array<double, 2> >& holes, std::string& msg)
+{
   if(!r.next()) { msg = r.where(r.end_line()) + "unexpected end of file: the hole header is missing"; return false; }
   const std::size_t hole_header_line = r.line();
   long long nholes = 0;
   if(!read_count(r[0], nholes, r.here(), "the number of holes", msg)) return false;
   if(r.size() > 1) { msg = r.here() + "unexpected text " + quote(r[1]) + " after the hole header"; return false; }
   const std::size_t nh = static_cast<std::size_t>(nholes);
-  std::vector<std::array<double, 2> > holes;
-  std::vector<std::size_t> hole_lines;
-  holes.reserve((std::min)(nh, cap));
-  std::size_t hole_base = 0;
+  const std::size_t cap = r.text().size() / 6 + 1;
+  holes.items.reserve((std::min)(nh, cap));
   for(std::size_t i = 0; i < nh; ++i) {
-    if(!next_indexed_line(r, i, nh, hole_base, "hole", "holes", "the hole header", hole_header_line, false, msg))
+    if(!next_indexed_line(r, i, nh, holes.base, "hole", "holes", "the hole header", hole_header_line, false, msg))
       return false;
     if(r.size() < 3) { msg = r.here() + "hole " + std::string(r[0]) + " needs two coordinates (expected: index x y)"; return false; }
     double x = 0, y = 0;
@@ -138,13 +162,17 @@ bool read_poly_text(Text_lines& r, const std::string& node_file, Domain_2<K>& ou
       return false;
     }
     if(r.size() > 3) { msg = r.here() + "unexpected text " + quote(r[3]) + " after hole " + std::string(r[0]); return false; }
-    holes.push_back({x, y});
-    hole_lines.push_back(r.line());
+    holes.items.push_back({x, y});
+    holes.lines.push_back(r.line());
   }
+  return true;
+}
 
-  // Optional regional attributes: `<#regions>`, then `<index> <x> <y> <attribute> [<maximum
-  // area>]` (Triangle requires the one value, the second is optional). Read to check them and
-  // ignored; whatever follows is an error, not silently dropped.
+/// Reads the optional regional attributes: `<#regions>`, then `<index> <x> <y> <attribute>
+/// [<maximum area>]` (Triangle requires the one value, the second is optional). Read to check
+/// them and ignored; whatever follows is an error, not silently dropped.
+inline bool read_poly_regions(Text_lines& r, std::string& msg)
+{
   if(r.next()) {
     const std::size_t region_header_line = r.line();
     long long nregions = 0;
@@ -188,13 +216,27 @@ bool read_poly_text(Text_lines& r, const std::string& node_file, Domain_2<K>& ou
       return false;
     }
   }
+  return true;
+}
 
+/// Reads the sections of a `.poly` file after its vertex header. If the `.poly` lists 0
+/// vertices, `node_file` (may be empty) is the `.node` file holding them.
+template <class K>
+bool read_poly_text(Text_lines& r, const std::string& node_file, Domain_2<K>& out, std::string& msg)
+{
+  Vertex_list v;
+  long long count = 0;
+  Poly_section<std::array<std::size_t, 2> > segments;
+  Poly_section<std::array<double, 2> > holes;
+  if(!read_poly_vertices(r, node_file, v, count, msg) || !read_poly_segments(r, v, segments, msg) ||
+     !read_poly_holes(r, holes, msg) || !read_poly_regions(r, msg))
+    return false;
   append_points<K>(v.xy, out.points);
-  out.segments = std::move(segs);
-  append_points<K>(holes, out.holes);
-  out.point_labels = file_labels(base, v.lines, count == 0 ? node_file : std::string());
-  out.segment_labels = file_labels(seg_base, seg_lines);
-  out.hole_labels = file_labels(hole_base, hole_lines);
+  out.segments = std::move(segments.items);
+  append_points<K>(holes.items, out.holes);
+  out.point_labels = file_labels(v.base, v.lines, count == 0 ? node_file : std::string());
+  out.segment_labels = file_labels(segments.base, segments.lines);
+  out.hole_labels = file_labels(holes.base, holes.lines);
   return true;
 }
 

@@ -7,6 +7,7 @@
 
 #include <CGAL/Quad_mesher_2/Cell_key.h>
 #include <CGAL/Quad_mesher_2/Meshing_error.h>
+#include <CGAL/Quad_mesher_2/Point_anchor.h>
 #include <CGAL/Quad_mesher_2/Quad_mesh_2.h>
 #include <CGAL/Quad_mesher_2/internal/Key_map.h>
 
@@ -41,14 +42,6 @@ namespace internal {
 // share a cell, so no vertex moves twice; crowded blocks go one level deeper until none is.
 // Under Epick the moved vertices carry a few roundings of their coordinates; the bounds have
 // degrees of room for them. Under Epeck they are exact.
-struct Point_anchor
-{
-  std::size_t point; // index of the input point
-  int level;
-  int radius;        // 1 or 3
-  std::int64_t X, Y; // W on the level's lattice
-};
-
 inline double tent_factor(int radius, int ring)
 {
   static const double three[3] = { 1.0, 0.75, 0.375 };

@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): Quad_mesher_2 developers
 
-#ifndef CGAL_QUAD_MESHER_2_INTERNAL_BOUNDARY_SIZING_H
-#define CGAL_QUAD_MESHER_2_INTERNAL_BOUNDARY_SIZING_H
+#ifndef CGAL_QUAD_MESHER_2_INTERNAL_NARROW_REGIONS_H
+#define CGAL_QUAD_MESHER_2_INTERNAL_NARROW_REGIONS_H
 
 #include <CGAL/Quad_mesher_2/Domain_2.h>
 #include <CGAL/Quad_mesher_2/Domain_loops_2.h>
@@ -265,4 +265,4 @@ std::vector<Size_sample> narrow_region_samples(const Domain_2<K>& domain, const 
 } // namespace Quad_mesher_2
 } // namespace CGAL
 
-#endif // CGAL_QUAD_MESHER_2_INTERNAL_BOUNDARY_SIZING_H
+#endif // CGAL_QUAD_MESHER_2_INTERNAL_NARROW_REGIONS_H

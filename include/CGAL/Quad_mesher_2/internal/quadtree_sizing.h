@@ -1,0 +1,371 @@
+// Copyright (c) 2026 Quad_mesher_2 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Quad_mesher_2 developers
+
+#ifndef CGAL_QUAD_MESHER_2_INTERNAL_QUADTREE_SIZING_H
+#define CGAL_QUAD_MESHER_2_INTERNAL_QUADTREE_SIZING_H
+
+#include <CGAL/Quad_mesher_2/Balanced_quadtree_2.h>
+#include <CGAL/Quad_mesher_2/Cell_key.h>
+#include <CGAL/Quad_mesher_2/Domain_2.h>
+#include <CGAL/Quad_mesher_2/Domain_loops_2.h>
+#include <CGAL/Quad_mesher_2/Mesh_criteria_2.h>
+#include <CGAL/Quad_mesher_2/Meshing_error.h>
+#include <CGAL/Quad_mesher_2/internal/buffer_zone_clearance.h>
+#include <CGAL/Quad_mesher_2/internal/narrow_regions.h>
+#include <CGAL/Quad_mesher_2/internal/nearest_neighbor_distances.h>
+#include <CGAL/Quad_mesher_2/internal/quad_geometry.h>
+
+#include <CGAL/Bbox_2.h>
+#include <CGAL/number_utils.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Quad_mesher_2 {
+namespace internal {
+
+// Paper §4.2: the sizes the quadtree is refined to, before it is balanced. Every bound asks
+// for a level at a place; a level beyond the tree's depth is an error naming the place, not a
+// silently coarser mesh.
+
+// the level whose cells have side <= s
+template <class Quadtree>
+int level_for_size(const Quadtree& tree, double s)
+{
+  return (std::max)(0, int(std::ceil(std::log2(tree.root_side() / s))));
+}
+
+// the deepest level whose cells are not below the criteria's minimum size
+template <class Quadtree, class Criteria>
+int min_size_level(const Quadtree& tree, const Criteria& criteria)
+{
+  if(criteria.min_size() <= 0)
+    return tree.max_depth();
+  int l = int(std::floor(std::log2(tree.root_side() / criteria.min_size())));
+  return (std::min)((std::max)(l, 0), tree.max_depth());
+}
+
+// A point where a round of the buffer stages asked for finer cells, and the local size there.
+typedef std::pair<Point_2d, double> Refinement_request;
+
+// The requests of every round so far. Each round builds its quadtree anew and refines it at
+// all of them: one level finer than it is there, at least, and cells of half the local size.
+class Refinement_queue
+{
+public:
+  void clear()
+  {
+    m_requests.clear();
+    m_applied = 0;
+  }
+
+  // Queues each request, but not those that ask for cells below the quadtree's depth;
+  // returns how many it queued.
+  template <class Quadtree>
+  std::size_t add(const Quadtree& tree, const std::vector<Refinement_request>& requests)
+  {
+    std::size_t added = 0;
+    for(const auto& r : requests) {
+      const double size = r.second > 0 ? r.second / 2 : 0;
+      if(size > 0 && level_for_size(tree, size) > tree.max_depth()) continue;
+      m_requests.push_back(r);
+      ++added;
+    }
+    return added;
+  }
+
+  // Refines `tree` at every request; true if those queued since the last call split a cell.
+  // Every leaf touching the point is refined, not only the one `locate` picks: most requests
+  // are at core vertices, lattice points with four cells around them, and the poor buffer
+  // quads may lie in any of them.
+  template <class Quadtree>
+  bool refine(Quadtree& tree)
+  {
+    typedef typename Quadtree::Point_2 Point_2;
+    auto make_point = tree.geom_traits().construct_point_2_object();
+    const double delta = tree.cell_side(tree.max_depth()) / 2;
+    std::size_t leaves_before_new = 0;
+    for(std::size_t i = 0; i < m_requests.size(); ++i) {
+      if(i == m_applied)
+        leaves_before_new = tree.number_of_leaves();
+      const auto& r = m_requests[i];
+      std::array<Point_2, 4> around;
+      std::size_t n = 0;
+      for(int c = 0; c < 4; ++c) {
+        const Point_2 q = make_point(r.first.x + ((c & 1) ? delta : -delta),
+                                     r.first.y + ((c & 2) ? delta : -delta));
+        if(tree.contains(q)) around[n++] = q;
+      }
+      // at least one level finer than it is there now
+      int level = r.second > 0 ? level_for_size(tree, r.second / 2) : 0;
+      for(std::size_t k = 0; k < n; ++k) level = (std::max)(level, tree.locate(around[k]).level + 1);
+      if(level > tree.max_depth()) continue;
+      for(std::size_t k = 0; k < n; ++k) tree.refine_at(around[k], level);
+    }
+    const bool refined = m_applied < m_requests.size() && tree.number_of_leaves() > leaves_before_new;
+    m_applied = m_requests.size();
+    return refined;
+  }
+
+private:
+  std::vector<Refinement_request> m_requests;
+  std::size_t m_applied = 0; // of m_requests, by the last refine()
+};
+
+// The sizing of one quadtree by the criteria and the input: each refine_to_...() applies one
+// bound of §4.2. `points` are the input points without duplicates; `box` their bounding box.
+template <class GeomTraits>
+class Quadtree_sizing
+{
+public:
+  typedef Balanced_quadtree_2<GeomTraits> Quadtree;
+  typedef typename GeomTraits::Point_2 Point_2;
+  // how messages name points[i]
+  typedef std::function<std::string(std::size_t)> Point_name;
+
+  Quadtree_sizing(Quadtree& tree, const Domain_2<GeomTraits>& domain, const Domain_loops_2<GeomTraits>& loops,
+                  const Mesh_criteria_2<GeomTraits>& criteria, const std::vector<Point_2>& points,
+                  const Bbox_2& box, Point_name name, const GeomTraits& traits)
+    : m_tree(tree), m_domain(domain), m_loops(loops), m_criteria(criteria), m_points(points), m_box(box),
+      m_name(std::move(name)), m_traits(traits)
+  {
+    compute_point_spacing();
+  }
+
+  // The level whose cells have side <= spacing/divisor at point i; an error if that is beyond
+  // the maximum depth and no minimum size caps it.
+  int point_level(std::size_t i, double divisor) const
+  {
+    if(!std::isfinite(m_spacing[i]))
+      return 0; // a single point
+    int level = level_for_size(m_tree, m_spacing[i] / divisor);
+    if(level <= min_size_level(m_tree, m_criteria))
+      return level;
+    if(m_criteria.min_size() > 0 && !m_criteria.points_as_vertices())
+      return min_size_level(m_tree, m_criteria);
+    std::ostringstream msg;
+    msg.precision(17);
+    msg << "input points " << m_name(i) << " (" << m_xy[i][0] << ", " << m_xy[i][1]
+        << ") and " << m_name(m_nearest[i]) << " (" << m_xy[m_nearest[i]][0] << ", "
+        << m_xy[m_nearest[i]][1] << ") are " << m_spacing[i] << " apart: separating them needs quadtree depth " << level
+        << ", beyond " << m_tree.depth_limit();
+    if(m_criteria.min_size() > 0)
+      msg << " or the minimum size " << m_criteria.min_size();
+    throw Meshing_error(msg.str());
+  }
+
+  // No cell meeting the domain's box larger than the maximum size. The cells it asks for are
+  // counted before any is made: a budget error now, not after minutes and gigabytes.
+  void refine_to_max_size()
+  {
+    if(m_criteria.max_size() <= 0)
+      return;
+    const int level = level_for_size(m_tree, m_criteria.max_size());
+    if(level > m_tree.max_depth()) {
+      std::ostringstream msg;
+      msg << "the maximum size " << m_criteria.max_size() << " needs quadtree depth " << level
+          << ", beyond " << m_tree.depth_limit();
+      throw Meshing_error(msg.str());
+    }
+    const double side = m_tree.cell_side(level);
+    auto cells_across = [&](double lo, double hi, double origin, std::uint64_t all) {
+      if(m_domain.is_point_cloud())
+        return double(all);
+      return std::floor((hi - origin) / side) - std::floor((lo - origin) / side) + 1;
+    };
+    const double cells = cells_across(m_box.xmin(), m_box.xmax(), m_tree.lattice_x(0, 0), m_tree.cells_x(level))
+                         * cells_across(m_box.ymin(), m_box.ymax(), m_tree.lattice_y(0, 0), m_tree.cells_y(level));
+    if(cells > double(m_criteria.max_cells())) {
+      std::ostringstream msg;
+      msg << "the maximum size " << m_criteria.max_size() << " needs about " << cells
+          << " quadtree cells over the domain, more than the cell budget of " << m_criteria.max_cells()
+          << "; coarsen it or raise the cell budget";
+      throw Meshing_error(msg.str());
+    }
+    if(m_domain.is_point_cloud()) {
+      m_tree.refine([&](const Cell_key& k) { return k.level < level; });
+      return;
+    }
+    split_inside_domain(level, side);
+  }
+
+  // Paper §4.2: the cell holding input point i is no larger than s_i = min_j d_ij.
+  void refine_to_point_spacing()
+  {
+    for(std::size_t i = 0; i < m_points.size(); ++i) {
+      const int level = point_level(i, 1);
+      if(level > 0)
+        m_tree.refine_at(m_points[i], level);
+    }
+  }
+
+  // No cell larger than the user's sizing field at its centre or a corner.
+  void refine_to_sizing_field()
+  {
+    const auto& field = m_criteria.sizing_field();
+    const int cap = min_size_level(m_tree, m_criteria);
+    const bool capped = m_criteria.min_size() > 0;
+    m_tree.refine([&](const Cell_key& k) {
+      if(outside_domain_box(k))
+        return false;
+      double side = m_tree.cell_side(k.level);
+      double target = CGAL::to_double(field(m_tree.cell_center(k)));
+      for(int c = 0; c < 4; ++c)
+        target = (std::min)(target, CGAL::to_double(field(m_tree.lattice_point(
+                                        k.level, k.i + (c & 1), k.j + (c >> 1)))));
+      if(!(target > 0))
+        throw Meshing_error("the sizing field is not positive near ("
+                            + std::to_string(m_tree.lattice_x(k.level, k.i)) + ", "
+                            + std::to_string(m_tree.lattice_y(k.level, k.j)) + ")");
+      if(side <= target)
+        return false;
+      return !capped || k.level < cap;
+    });
+  }
+
+  // Paper §4.2: more than two cells across every narrow region (narrow_regions.h).
+  void refine_narrow_regions()
+  {
+    auto make_point = m_traits.construct_point_2_object();
+    for(const Size_sample& s : narrow_region_samples(m_domain, m_loops, m_tree.cell_side(m_tree.max_depth()), m_criteria.max_cells(), m_traits)) {
+      const int level = level_for_size(m_tree, s.size);
+      if(level > m_tree.max_depth()) {
+        std::ostringstream msg;
+        msg << "a narrow region of width " << 4 * s.size << " near (" << s.point[0] << ", "
+            << s.point[1] << ") needs quadtree depth " << level << ", beyond "
+            << m_tree.depth_limit();
+        throw Meshing_error(msg.str());
+      }
+      const Point_2 p = make_point(s.point[0], s.point[1]);
+      if(level > 0 && m_tree.contains(p))
+        m_tree.refine_at(p, level);
+    }
+  }
+
+  // Cells within `boundary_band` cells of the boundary are made as small as the leaf at the
+  // nearest boundary point, so the clearance leaves a core boundary of one cell size: the
+  // uniform grid of §4.4 (boundary angles 90°, 180° and 270° only) and a buffer zone of even
+  // width. The levels are read before any band is refined, so fine cells do not spread along
+  // the whole boundary, one band after another.
+  void refine_boundary_band()
+  {
+    auto make_point = m_traits.construct_point_2_object();
+    auto x_of = m_traits.compute_x_2_object();
+    auto y_of = m_traits.compute_y_2_object();
+    std::vector<std::pair<std::array<double, 2>, int>> targets;
+    for(const auto& loop : m_loops.loops) {
+      const std::size_t n = loop.vertices.size();
+      for(std::size_t k = 0; k < n; ++k) {
+        const Point_2& a = m_domain.points[loop.vertices[k]];
+        const Point_2& b = m_domain.points[loop.vertices[(k + 1) % n]];
+        const double ax = CGAL::to_double(x_of(a)), ay = CGAL::to_double(y_of(a));
+        const double dx = CGAL::to_double(x_of(b)) - ax, dy = CGAL::to_double(y_of(b)) - ay;
+        const double length = std::hypot(dx, dy);
+        for(double t = 0; t < 1;) {
+          const std::array<double, 2> q{ { ax + t * dx, ay + t * dy } };
+          const int level = m_tree.locate(make_point(q[0], q[1])).level;
+          targets.push_back({ q, level });
+          t += m_tree.cell_side(level) / (2 * length);
+        }
+      }
+    }
+    for(const auto& target : targets) {
+      const double h = m_tree.cell_side(target.second);
+      for(int i = -boundary_band; i <= boundary_band; ++i)
+        for(int j = -boundary_band; j <= boundary_band; ++j) {
+          const Point_2 p = make_point(target.first[0] + i * h, target.first[1] + j * h);
+          if(m_tree.contains(p) && m_tree.locate(p).level < target.second)
+            m_tree.refine_at(p, target.second);
+        }
+    }
+  }
+  static constexpr int boundary_band = 3;
+
+private:
+  void compute_point_spacing()
+  {
+    const std::size_t n = m_points.size();
+    m_xy.resize(n);
+    for(std::size_t i = 0; i < n; ++i)
+      m_xy[i] = { CGAL::to_double(m_traits.compute_x_2_object()(m_points[i])),
+                  CGAL::to_double(m_traits.compute_y_2_object()(m_points[i])) };
+    Nearest_neighbor_distances nn(m_xy);
+    m_spacing = std::move(nn.distance);
+    m_nearest = std::move(nn.neighbor);
+  }
+
+  // Splits the cells meeting the domain down to `level` (of cell side `side`). A cell wholly
+  // outside the domain is cleared anyway: it stays as it is (balance grades it), which saves
+  // the quarter of the cells that a disc's box holds outside the disc. A cell that no segment
+  // meets lies on one side, which its parent's tells, or its centre.
+  void split_inside_domain(int level, double side)
+  {
+    enum Side : unsigned char { UNKNOWN, INSIDE, OUTSIDE };
+    // Room for the cells of that size the domain's area holds: fewer than it gets (the
+    // boundary's cells come on top), so never a larger node map than growing would make.
+    const double area = CGAL::to_double(domain_area(m_domain, m_loops, m_traits));
+    m_tree.reserve(std::size_t(area / (side * side)));
+    const Domain_segments<GeomTraits> boundary(m_domain, m_loops, m_traits);
+    auto meets_boundary = [&](const Cell_key& k) { // by boxes: it may say yes too often
+      bool any = false;
+      boundary.query(m_tree.cell_rectangle(k).bbox(), [&](std::size_t) { any = true; });
+      return any;
+    };
+    std::vector<std::pair<Cell_key, Side>> stack;
+    for(const Cell_key& k : m_tree.leaves()) stack.emplace_back(k, UNKNOWN);
+    while(!stack.empty()) {
+      auto [k, side_of_k] = stack.back();
+      stack.pop_back();
+      if(k.level >= level || !m_tree.is_leaf(k) || outside_domain_box(k))
+        continue;
+      if(side_of_k == UNKNOWN && !meets_boundary(k))
+        side_of_k = boundary.in_domain(m_tree.cell_center(k)) ? INSIDE : OUTSIDE;
+      if(side_of_k == OUTSIDE)
+        continue;
+      m_tree.split(k);
+      for(int dy = 0; dy < 2; ++dy)
+        for(int dx = 0; dx < 2; ++dx) stack.emplace_back(k.child(dx, dy), side_of_k);
+    }
+  }
+
+  // A domain's mesh lies within the bounding box of its points: cells wholly outside it are
+  // cleared anyway, so the size bounds are not applied there (the power-of-two root square
+  // can be four times the box's area; balance still grades them). A point cloud's mesh is the
+  // whole root square.
+  bool outside_domain_box(const Cell_key& k) const
+  {
+    if(m_domain.is_point_cloud())
+      return false;
+    const std::int64_t i = std::int64_t(k.i), j = std::int64_t(k.j);
+    return m_tree.lattice_x(k.level, i + 1) < m_box.xmin() || m_tree.lattice_x(k.level, i) > m_box.xmax()
+           || m_tree.lattice_y(k.level, j + 1) < m_box.ymin() || m_tree.lattice_y(k.level, j) > m_box.ymax();
+  }
+
+  Quadtree& m_tree;
+  const Domain_2<GeomTraits>& m_domain;
+  const Domain_loops_2<GeomTraits>& m_loops;
+  const Mesh_criteria_2<GeomTraits>& m_criteria;
+  const std::vector<Point_2>& m_points;
+  Bbox_2 m_box;
+  Point_name m_name;
+  const GeomTraits& m_traits;
+  std::vector<std::array<double, 2>> m_xy; // the points' coordinates, for sizing only
+  std::vector<double> m_spacing;           // s_i = min_j d_ij
+  std::vector<std::size_t> m_nearest;      // the j of s_i
+};
+
+} // namespace internal
+} // namespace Quad_mesher_2
+} // namespace CGAL
+
+#endif // CGAL_QUAD_MESHER_2_INTERNAL_QUADTREE_SIZING_H
