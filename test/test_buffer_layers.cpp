@@ -1996,4 +1996,22 @@ TEST(Buffer_layers_helpers, right_bisector)
   EXPECT_NEAR(QM::internal::right_side_angle(a, b, tip), QM::internal::right_side_angle(a, b, c) / 2, 1e-9);
 }
 
+// The bird (../shared/data, skipped when absent): no refinement round leaves an inverted
+// buffer quad. The templates leave the core boundary beside input corners to the corners'
+// fans (near_input_corner()); searched there too, the bird had a round with inverted quads.
+TEST(Buffer_layers, bird_has_no_round_with_inverted_quads)
+{
+  const std::string name = "bird/bird.poly";
+  if(!std::ifstream(std::string(QM2_SHARED_DATA_DIR) + "/" + name))
+    GTEST_SKIP() << "no " << name << " in the shared data";
+  const Domain d = load(name);
+  Mesher mesher(d);
+  mesher.run(Stage::BUFFER2);
+  ASSERT_FALSE(mesher.round_figures().empty());
+  for(const auto& r : mesher.round_figures()) {
+    EXPECT_EQ(r.invalid_quads, 0u) << "round " << r.round;
+    EXPECT_TRUE(r.valid) << "round " << r.round;
+  }
+}
+
 } // namespace qm2_buffer_tests

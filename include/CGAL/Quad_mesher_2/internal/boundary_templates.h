@@ -14,7 +14,7 @@
 // whose quads are not squares of one size (the adaptive templates), then the corners, then
 // the notches; last, a vertex within range moves either way if a neighbour is still out.
 // On a 45° staircase the corners cut first leave 225° and 135°; notches opened first would
-// flatten the corners between them, and every other notch stayed at 90°.
+// flatten the corners between them and leave every other notch at 90°.
 // Where a vertex stays out, the plane search (template_search.h) moves it, and the templates
 // that change the core's connectivity (connectivity_templates.h) fill the notches and split the
 // corners that no move brings in; the vertices about them are searched again.

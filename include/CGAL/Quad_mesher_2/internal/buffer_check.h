@@ -75,7 +75,7 @@ public:
             size = (std::min)(size, m_zone.local_size[b]);
           }
         // not for an invalid quad: a broken buffer's quads can span tens of cells each, and
-        // their corners' cells suffice (a disc with thin elliptic holes asked for 1.8 million)
+        // their corners' cells suffice (their whole areas would ask for far more cells)
         if(valid) request_over_area(P, size, requests);
       }
     }
@@ -83,10 +83,9 @@ public:
 
 private:
   // A buffer quad is about as large as the cells it hangs from. One far larger spans a stretch
-  // the core does not reach: the clearance peeled a strip one cell thick from its dead end (an
-  // arm 0.13 wide turned 45.37 degrees, whose cells had 4.2 per width, lost its core for 0.3
-  // of its length, and refining at the quad's corners never brought it back). Requests at
-  // cells' spacing over the quad's box bring the core there.
+  // the core does not reach (the clearance peeled a strip one cell thick from a dead end), and
+  // refining at its corners does not bring the core back: requests at cells' spacing over the
+  // quad's box do.
   void request_over_area(const std::array<Point_2d, 4>& P, double size,
                          std::vector<std::pair<Point_2d, double>>& requests) const
   {

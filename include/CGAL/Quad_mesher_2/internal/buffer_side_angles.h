@@ -68,8 +68,8 @@ inline double worst_buffer_angle_excess(const Point_2d& a2, const Point_2d& a, c
 
 // how far the angle at b (between a and c) may be off by the rounding of their coordinates
 // to doubles, in degrees, and at least angle_tolerance: far from the origin a double holds
-// few digits of a small domain's edges (a disc 1e-4 across at 1e5: kites of exactly 225
-// degrees came out 6e-4 over, and were split as if jammed)
+// few digits of a small domain's edges (a kite of exactly 225 degrees may come out over it,
+// and must not count as out of Lemma 2's range nor be split as if jammed)
 inline double rounding_tolerance(const Point_2d& a, const Point_2d& b, const Point_2d& c)
 {
   double scale = 0;

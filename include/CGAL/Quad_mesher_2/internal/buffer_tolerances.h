@@ -23,8 +23,8 @@ struct Buffer_tolerances
   // Angles within this many degrees of a bound count as on it, and closer ones as equal:
   // doubles hold an angle only to about 1e-8 degrees where the coordinates are 2^20 cell
   // sides, and a choice made by rounding differs on a scaled or moved domain (a cut corner's
-  // core angle is exactly 135 degrees: a disc scaled by 2^-14 and moved to (3, 0.5) was
-  // refined elsewhere)
+  // core angle is exactly 135 degrees): power-of-two scalings and dyadic moves must give the
+  // same mesh
   static constexpr double angle_tolerance = 1e-6;
   // The final check of the buffer quads is no looser than verify_mesh.py's range slack: a
   // quad passed here is one it passes.

@@ -212,8 +212,8 @@ public:
 
   // true if an input corner (a loop vertex turning by the feature angle or more) at an end of
   // the boundary edge nearest core vertex b lies within 2 h(b) of it: its buffer is the
-  // corner's (§5), not Lemma 2's (bird_mx's 1.13, -6.79 moved off the lattice beside the tip
-  // left a first-layer quad inverted)
+  // corner's (§5), not Lemma 2's: the templates' plane searches, filled notches and split
+  // corners leave b alone (moved there, b can fold the buffer quads beside the corner)
   bool near_input_corner(std::size_t b) const
   {
     const Loop_locator::Hit h = locator->closest(xy[b], 2 * local_size[b]);
@@ -289,11 +289,9 @@ public:
     for(int k = 0; k < 4; ++k) P[k] = xy[q[k]];
     double b = quad_badness(P);
     // an angle an input corner alpha forces is not the strip's fault: the quad is judged by its
-    // other three, which fit in [45, 135] (they sum to 360 - alpha; with [alpha, 180 - alpha]
-    // costing what [45, 135] costs elsewhere, as the paper allows, bird's 11.5-degree tip kept
-    // 138.8). Beyond 45 their deviation counts in full from a 6-degree corner up (there they
-    // fit: the mirrored bird's tip kept 137.4 while it counted less) and less below, as it
-    // did: on a needle's tip they cannot all fit.
+    // other three against [45, 135], not the paper's looser [alpha, 180 - alpha]. From a
+    // 6-degree corner up they fit there (they sum to 360 - alpha) and their deviation beyond 45
+    // counts in full; below, on a needle's tip, they cannot all fit and it counts less.
     if(b < 1000.0)
       for(int k = 0; k < 4; ++k)
         if(input_corner_angle(q[k]) < 45.0 // cheap test first: the cost runs in inner loops

@@ -58,8 +58,7 @@
 // Morton order, so a block is compact and most blocks, far from the boundary, get no
 // candidate and no exact predicate. Inside/outside is passed from quad to quad through
 // shared vertices; point location only for a quad without an earlier one at its vertices.
-// Mesh adjacency is built only for the quads left by criteria 1-3. Measured (Epick, the
-// disc of `bench_domain` at 2^-9, 4.2e6 quads in, 7.4e5 kept): ~0.3 s, was ~2.5 s.
+// Mesh adjacency is built only for the quads left by criteria 1-3.
 
 #include <CGAL/Quad_mesher_2/Domain_2.h>
 #include <CGAL/Quad_mesher_2/Domain_loops_2.h>

@@ -334,7 +334,7 @@ private:
     const std::size_t k = snap[rot(a)], kept = four_at[k] ? 4 : 3;
     std::size_t first_kept = a == 0 ? 0 : (std::max)(a, anchor - 1);
     // a needle's F points wrap around its tip, so neither the bisector nor the fan's
-    // parallelogram below means much there (the 6-degree spike test: 168 degrees with them)
+    // parallelogram below means much there (choosing by them leaves a fan quad far out)
     const bool needle = m_zone.domain_angle(l, k) > 340.0;
     // of more, those whose middle lies nearest the corner's bisector
     if(a != 0 && b - a + 1 > kept && !needle) {
@@ -443,11 +443,10 @@ private:
   // A kept loop vertex wider than 135 degrees that no F point projects onto may become the
   // middle of a fan of boundary edges, a quad with the vertex's own angle: a coarse polygon's
   // vertices, kept for the chord tolerance and turning by less than the feature angle, are
-  // about as many as the F points (a 24-gon of radius 1 had 8 quads at 165 degrees). Such a
-  // vertex (of those marked in `at`) takes over the node of the nearer projection beside it
-  // in the chain; the first node stays the first F point's, and those spread around a corner
-  // stay its fan's. The chord that then spans the projection's place must keep the nodes
-  // under it within the tolerance.
+  // about as many as the F points. Such a vertex (of those marked in `at`) takes over the node
+  // of the nearer projection beside it in the chain; the first node stays the first F
+  // point's, and those spread around a corner stay its fan's. The chord that then spans the
+  // projection's place must keep the nodes under it within the tolerance.
   void take_over_projection_nodes(const Projection& proj, std::vector<Node>& candidates, std::vector<std::size_t>& alias,
                                   const std::vector<bool>& at) const
   {
@@ -827,10 +826,9 @@ private:
   // two others (the middle of a fan of boundary edges) is the boundary's own angle there,
   // which no later move changes (an input vertex stays; a point on an input edge only slides
   // along it), unlike a quad sheared by its F points, which the optimizer straightens: it
-  // costs as much as a hundred degrees more (lake_superior_jigsaw kept a 135.9-degree corner
-  // whole, one quad spanning it, rather than shear a row; the mirrored guitar kept a chord
-  // node at 174.5 degrees beside a left-out vertex). So does a quad over 135 degrees on a side
-  // of a corner over 270 degrees (wide_side_of_reflex_fan()).
+  // costs as much as a hundred degrees more, so that the pairing shears a row rather than span
+  // a wide boundary angle with one quad. So does a quad over 135 degrees on a side of a corner
+  // over 270 degrees (wide_side_of_reflex_fan()).
   double strip_cost(const Quad& q) const
   {
     const double b = cost(q);
@@ -852,11 +850,11 @@ private:
   }
 
   // the corner (0 to 3) of q with over 135 degrees at an input corner of 270 degrees or more
-  // (270 to rounding: a grid of square holes kept fans of 134.8 + 135.2 at theirs), between a
-  // boundary node and an F point, or -1: a side of a fan of two there, or of a fan of three
-  // with an F point off to one side. A fan of two at such a corner keeps over 135 degrees in one of its quads
-  // however its F point moves (the pairing took two quads of about 147 degrees at a 294-degree
-  // island tip over a fan of three whose middle F point, flat for now, the optimizer moves).
+  // (270 to rounding: a fan of two fits exactly 270 only as 135 + 135), between a boundary node
+  // and an F point, or -1: a side of a fan of two there, or of a fan of three with an F point
+  // off to one side. A fan of two at such a corner keeps over 135 degrees in one of its quads
+  // however its F point moves, unlike a fan of three whose middle F point is flat for now: the
+  // later moves open that one.
   int wide_side_of_reflex_fan(const Quad& q) const
   {
     for(int k = 0; k < 4; ++k) {

@@ -34,17 +34,15 @@ public:
 
   // A corner wider than 225 degrees gets a fan of three quads. Over 270 two quads would each
   // have over 135 degrees; from 225 they would each have at least 112.5 and three quads fit
-  // better (75 degrees or more each): near 270 the two quads' split is never even (the guitar's
-  // 270-degree notch gave 110 + 160).
+  // better (75 degrees or more each): near 270 the two quads' split is never even.
   bool needs_fan_of_three(std::size_t l, std::size_t k) const { return m_zone.domain_angle(l, k) > 225.0; }
 
   // Whether a fan-of-three corner may keep four F points on its node. Of its triangles around
   // the node (one per F point, and one more), the pairing joins pairs: with three F points,
   // four triangles make three quads in one phase of the ladder beside the corner and two in
   // the other, and the ladder's run along the boundary sets the phase (on a straight coast it
-  // cannot switch: a node added there would make a flat fan). Four F points make five
-  // triangles, hence a fan of three in either phase (bahamas_islands' 281-degree corner at
-  // (-77.94317, 24.33101) kept a fan of two, 146 degrees, round after round). Spaced alpha/5
+  // cannot switch: a node added there would make a flat fan).
+  // Four F points make five triangles, hence a fan of three in either phase. Spaced alpha/5
   // apart, they give the corner alpha/5, 2 alpha/5 and 2 alpha/5 either way: within 135
   // degrees up to a corner of 337.5; below 270 a fan of two fits (at 270 only as 135 + 135
   // exactly, so 270 to rounding is taken too).
@@ -56,15 +54,14 @@ public:
 
   // The F points of a corner's fan of three come from the core's notch around it and may
   // bunch on one side: the middle one then lies near the chord of the other two and the fan's
-  // middle quad is flat (greenland's 300-degree corner at (255, 350.5): 25 degrees). The
-  // middle F point moves towards the far corner of the parallelogram on the corner and the
-  // other two while that lowers the worst of that quad and its two first-layer quads.
+  // middle quad is nearly flat. The middle F point moves towards the far corner of the
+  // parallelogram on the corner and the other two while that lowers the worst of that quad and
+  // its two first-layer quads.
   //
   // The fan's outer F points come from the core too and may leave the middle quad too much of
-  // the corner (a 320-degree trailing edge split 103, 144 and 73 degrees). Each then turns
-  // about the corner, at its distance from it, while that lowers the worst of the middle quad,
-  // the first-layer quads at it and the angles at the corner between it and the boundary (its
-  // side quad's), then the middle point moves again.
+  // the corner. Each then turns about the corner, at its distance from it, while that lowers
+  // the worst of the middle quad, the first-layer quads at it and the angles at the corner
+  // between it and the boundary (its side quad's), then the middle point moves again.
   void open_fan(std::size_t c, std::size_t a, std::size_t m, std::size_t b, const Point_2d& corner,
                 const Point_2d& before, const Point_2d& after)
   {
@@ -131,11 +128,10 @@ public:
 
   // An obtuse corner (135 to 225 degrees) whose node took one first buffer point F is split
   // by the edge from it to F (paper Fig. 8(c): that point lies on the corner's bisector). F
-  // comes from a core vertex that need not face the corner, and an uneven split leaves the
-  // pairing one quad over the whole corner (a 136-degree sector whose core came to a point
-  // before it: 39 + 97 degrees, then one quad of 136). F moves towards the bisector, at its
-  // distance from the corner, while that lowers the worst of the two halves' and its two
-  // first-layer quads' deviation from 90 degrees.
+  // comes from a core vertex that need not face the corner (the core may come to a point
+  // before it), and an uneven split leaves the pairing one quad over the whole corner. F moves
+  // towards the bisector, at its distance from the corner, while that lowers the worst of the
+  // two halves' and its two first-layer quads' deviation from 90 degrees.
   void turn_to_bisector(std::size_t c, std::size_t m, std::size_t k)
   {
     const auto& cyc = m_zone.cycles[c];

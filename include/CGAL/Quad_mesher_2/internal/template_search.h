@@ -213,7 +213,7 @@ private:
 
   // true if core boundary vertex b (between a and c) may lie at p: every quad at it within
   // [45, 135], none of its edges shorter than half what it was in the core the clearance left
-  // (angles alone let an edge shrink to nothing: naca0012's (0.872, 0.024) met its neighbour),
+  // (angles alone would let an edge shrink to nothing, b meeting its neighbour),
   // its boundary edges h(b)/4 from the boundary
   // (with `angles` false, all but the angles: the interior may still give way)
   bool admissible_boundary_position(std::size_t a, std::size_t b, std::size_t c, const Point_2d& p,
