@@ -93,13 +93,19 @@ TEST(QuadMesherTraits_2, archetype_is_enough_for_the_mesher)
   auto mesh = mesher.run();
   EXPECT_TRUE(qm2_checks::is_conforming(mesh));
   EXPECT_TRUE(mesher.quadtree().is_strongly_balanced());
-  // a domain with a boundary loop (narrow-region sizing, loop validation)
+  // a domain with a boundary loop, through every stage (narrow-region sizing, loop
+  // validation, clearance, the buffer layers)
   CGAL::Quad_mesher_2::Domain_2<Archetype_traits> square;
   square.points = { K::Point_2(0, 0), K::Point_2(1, 0), K::Point_2(1, 1), K::Point_2(0, 1) };
   square.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 } };
   CGAL::Quad_mesher_2::Quadtree_mesher_2<Archetype_traits> domain_mesher(square, criteria);
-  EXPECT_TRUE(qm2_checks::is_conforming(domain_mesher.run(CGAL::Quad_mesher_2::Stage::CLEARANCE)));
+  const auto square_mesh = domain_mesher.run(CGAL::Quad_mesher_2::Stage::BUFFER2);
+  EXPECT_TRUE(qm2_checks::is_conforming(square_mesh));
   EXPECT_EQ(domain_mesher.loops().loops.size(), 1u);
+  ASSERT_TRUE(domain_mesher.quality().has_value());
+  EXPECT_TRUE(domain_mesher.quality()->is_valid());
+  EXPECT_GE(domain_mesher.quality()->min_angle, 45.0 - 1e-6);
+  EXPECT_LE(domain_mesher.quality()->max_angle, 135.0 + 1e-6);
 }
 
 // The mesher keeps a reference to its domain: a temporary one must not compile.

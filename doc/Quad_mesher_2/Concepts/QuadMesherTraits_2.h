@@ -21,11 +21,18 @@ traits (every `..._object()` in `include/`):
   (point in loop), `Construct_bbox_2` (box filters) and `Compute_area_2` (`domain_area()`);
 - the buffer-zone clearance (`internal/buffer_zone_clearance.h`): `Orientation_2`,
   `Compare_x_2`, `Construct_segment_2`, `Construct_bbox_2` and
-  `Compare_squared_distance_2` (criterion 3).
+  `Compare_squared_distance_2` (criterion 3);
+- the buffer stages (`internal/buffer_zone.h` and the stage headers that work on it):
+  `Construct_point_2`, `Compute_x_2` and `Compute_y_2` (points to and from the doubles the
+  searches move them in, new boundary points on an input segment), `Orientation_2` (the
+  exact check of every quad they make or change), and `Construct_segment_2`,
+  `Construct_bbox_2` and `Compare_squared_distance_2` (whether a moved core boundary edge
+  keeps its clearance from the boundary).
 
 The narrow-region sizing (`internal/narrow_regions.h`) needs only the coordinates and
 `Construct_point_2`: it works in `double`. A test (`test/test_traits_and_headers.cpp`)
-compiles and runs the mesher with an archetype that provides nothing else.
+compiles and runs the mesher through every stage with an archetype that provides nothing
+else.
 
 The number type `FT` must be constructible from `double`, comparable with `operator<`,
 support `+`, `-` and `*` (the points stage moves vertices by \f$ x + f (p_x - w_x)\f$), and be

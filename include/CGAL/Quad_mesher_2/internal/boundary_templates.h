@@ -175,8 +175,8 @@ private:
         for(int k = 0; k < 4; ++k) P[k] = m_zone.xy[m_zone.mesh.quads[*q][k]];
         ok = quad_badness(P) <= 45.0 + angle_tolerance;
       }
-      if(ok && m_zone.locator->segment_distance(m_zone.xy[a], p, clear) > clear
-         && m_zone.locator->segment_distance(p, m_zone.xy[c], clear) > clear) {
+      if(ok && m_zone.clear_of_boundary(m_zone.xy[a], p, clear)
+         && m_zone.clear_of_boundary(p, m_zone.xy[c], clear)) {
         best = worst(p);
         best_f = f;
       }

@@ -16,10 +16,12 @@
 #include <CGAL/Quad_mesher_2/Domain_loops_2.h>
 #include <CGAL/Quad_mesher_2/Quad_mesh_2.h>
 #include <CGAL/Quad_mesher_2/internal/buffer_tolerances.h>
+#include <CGAL/Quad_mesher_2/internal/buffer_zone_clearance.h>
 #include <CGAL/Quad_mesher_2/internal/loop_locator.h>
 #include <CGAL/Quad_mesher_2/internal/mesh_adjacency.h>
 #include <CGAL/Quad_mesher_2/internal/quad_geometry.h>
 
+#include <CGAL/Bbox_2.h>
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
@@ -67,6 +69,7 @@ public:
     : mesh(core), local_size(core_size), domain(input), loops(input_loops), traits(kernel)
   {
     locator = make_loop_locator(domain, loops);
+    boundary = std::make_unique<Domain_segments<K>>(domain, loops, traits);
     chord_tolerance = 1e-3 * locator->diagonal();
     xy.reserve(mesh.points.capacity()); // the room the clearance left for the layers' points
     xy.resize(mesh.points.size());
@@ -225,6 +228,26 @@ public:
     return false;
   }
 
+  // Whether segment (a, b) keeps more than `clear` from every boundary segment, decided by
+  // the kernel's exact Compare_squared_distance_2 on a and b as kernel points (the templates'
+  // clearance of the core from the boundary).
+  bool clear_of_boundary(const Point_2d& a, const Point_2d& b, double clear) const
+  {
+    const auto point = traits.construct_point_2_object();
+    const typename K::Segment_2 ab = traits.construct_segment_2_object()(point(FT(a.x), FT(a.y)), point(FT(b.x), FT(b.y)));
+    const FT clear2 = FT(clear) * FT(clear);
+    const auto compare = traits.compare_squared_distance_2_object();
+    // the boxes within `clear` of the segment's, widened past the rounding of its corners
+    const double r = clear * (1 + 1e-6)
+                     + 4 * std::numeric_limits<double>::epsilon() * (std::max)({ std::abs(a.x), std::abs(a.y), std::abs(b.x), std::abs(b.y) });
+    const Bbox_2 box((std::min)(a.x, b.x) - r, (std::min)(a.y, b.y) - r, (std::max)(a.x, b.x) + r, (std::max)(a.y, b.y) + r);
+    bool clear_of = true;
+    boundary->query(box, [&](std::size_t s) {
+      if(clear_of && compare(ab, boundary->segment(s), clear2) != LARGER) clear_of = false;
+    });
+    return clear_of;
+  }
+
   // the angle of loop l at its vertex k on the domain's side (the loops have it on their left)
   double domain_angle(std::size_t l, std::size_t k) const
   {
@@ -367,6 +390,7 @@ public:
   const Domain_loops_2<K>& loops;
   K traits;
   std::unique_ptr<Loop_locator> locator;
+  std::unique_ptr<Domain_segments<K>> boundary; // the loops' segments, for exact decisions
   // the quads at each vertex from match_loops() to apply_boundary_templates(), which add none
   std::unique_ptr<Vertex_quads> quads_at;
   std::vector<Point_2d> xy;

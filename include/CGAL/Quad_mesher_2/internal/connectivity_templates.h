@@ -169,7 +169,7 @@ private:
     {
       const double after = excess(y);
       if(!(after < best - angle_tolerance / 10) || quad_badness_with(y) > 45.0 + core_slack
-         || !(z.locator->segment_distance(z.xy[a], y, clear) > clear) || !(z.locator->segment_distance(y, z.xy[c1], clear) > clear))
+         || !z.clear_of_boundary(z.xy[a], y, clear) || !z.clear_of_boundary(y, z.xy[c1], clear))
         return false;
       best = after;
       best_y = y;

@@ -98,22 +98,6 @@ public:
     }
   }
 
-  /// the distance from segment (a, b) to the nearest loop edge, if below `radius` (else
-  /// `radius` or more)
-  double segment_distance(const Point_2d& a, const Point_2d& b, double radius) const
-  {
-    double best = HUGE_VAL;
-    const double r = radius;
-    Bbox_2 box((std::min)(a.x, b.x) - r, (std::min)(a.y, b.y) - r, (std::max)(a.x, b.x) + r,
-               (std::max)(a.y, b.y) + r);
-    m_tree->query(box, [&](std::size_t s) {
-      const auto& v = m_loops[m_edge_of[s][0]];
-      const std::size_t k = m_edge_of[s][1];
-      best = (std::min)(best, segment_segment_distance(a, b, v[k], v[(k + 1) % v.size()]));
-    });
-    return best;
-  }
-
   /// the point of loop `l` at arclength `s` from its vertex 0 (modulo the loop's length)
   Hit point_at_arclength(std::size_t l, double s) const
   {
@@ -153,17 +137,6 @@ private:
     h.point = along_2d(a, b, h.t);
     h.dist = length_2d(minus_2d(p, h.point));
     return h;
-  }
-
-  static double segment_segment_distance(const Point_2d& a, const Point_2d& b, const Point_2d& c,
-                                         const Point_2d& d)
-  {
-    const double o1 = cross_2d(minus_2d(b, a), minus_2d(c, a)), o2 = cross_2d(minus_2d(b, a), minus_2d(d, a));
-    const double o3 = cross_2d(minus_2d(d, c), minus_2d(a, c)), o4 = cross_2d(minus_2d(d, c), minus_2d(b, c));
-    if(((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0)))
-      return 0;
-    return (std::min)((std::min)(point_segment_distance(a, c, d), point_segment_distance(b, c, d)),
-                      (std::min)(point_segment_distance(c, a, b), point_segment_distance(d, a, b)));
   }
 
   std::vector<std::vector<Point_2d>> m_loops;

@@ -237,8 +237,8 @@ private:
     }
     m_zone.xy[b] = old;
     const double clear = 0.25 * m_zone.local_size[b];
-    return ok && m_zone.locator->segment_distance(m_zone.xy[a], p, clear) > clear
-           && m_zone.locator->segment_distance(p, m_zone.xy[c], clear) > clear;
+    return ok && m_zone.clear_of_boundary(m_zone.xy[a], p, clear)
+           && m_zone.clear_of_boundary(p, m_zone.xy[c], clear);
   }
 
   // the interior core vertices (not on a cycle, not the domain's isolated points) of the quads
