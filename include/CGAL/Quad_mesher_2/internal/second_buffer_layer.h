@@ -190,9 +190,7 @@ private:
       m_zone.report.failure = "the first buffer points do not project once around their loop";
       return false;
     }
-    // Points sharing a node (they project onto one reflex corner, or fold back) are spread
-    // along the loop around it, one node each, at about their own spacing: the strip stays a
-    // ladder and the pairing is left free to fan where it pays.
+    // no position past one turn of the loop (the start again)
     for(std::size_t r = 0; r < n; ++r) P[r] = (std::min)(P[r], O + L);
     return true;
   }
@@ -264,8 +262,10 @@ private:
     }
   }
 
-  // Points sharing a node are spread along the loop around it, one node each, at about their
-  // own spacing, but for a fan's F points (keep_fan_points()), which stay on their corner's.
+  // Points sharing a node (they project onto one reflex corner, or fold back) are spread
+  // along the loop around it, one node each, at about their own spacing, but for a fan's F
+  // points (keep_fan_points()), which stay on their corner's: the strip stays a ladder and the
+  // pairing is left free to fan where it pays.
   void spread_shared_nodes(Projection& proj, const std::vector<bool>& four_at)
   {
     std::vector<double>& P = proj.P;
