@@ -23,7 +23,9 @@
 
 #include <CGAL/Quad_mesher_2/internal/buffer_zone.h>
 #include <CGAL/Quad_mesher_2/internal/sharp_corner_fans.h>
+#include <CGAL/Quad_mesher_2/internal/strip_costs.h>
 #include <CGAL/Quad_mesher_2/internal/strip_pairing.h>
+#include <CGAL/Quad_mesher_2/internal/strip_projection.h>
 
 #include <algorithm>
 #include <array>
@@ -47,17 +49,6 @@ class Buffer_strip : Buffer_tolerances
   typedef typename K::Point_2 Point_2;
   typedef std::array<std::size_t, 4> Quad;
 
-  // the first buffer points' projections onto the loop, by F point (`snap`: the loop vertex
-  // it snapped to, `hit`: the point) and by position r from the strip's start (`P`: its
-  // unwrapped arclength, `share`: the earlier point whose node it shares, `spread`: it was
-  // spread around a shared node)
-  struct Projection
-  {
-    std::vector<double> P;
-    std::vector<std::size_t> snap, share;
-    std::vector<Loop_locator::Hit> hit;
-    std::vector<bool> spread;
-  };
   // a candidate node of the boundary chain: a loop vertex or an F point's projection (its owner)
   struct Node { double param; std::size_t vertex; std::size_t owner; Point_2d xy; bool keep; };
   // the strip as the pairing sees it: F points' mesh ids, the chain's mesh ids and arclengths,
@@ -73,137 +64,27 @@ class Buffer_strip : Buffer_tolerances
 
 public:
   Buffer_strip(Buffer_zone<K>& zone, std::size_t cycle)
-    : m_zone(zone), m_fans(zone), c(cycle), l(zone.cycle_loop[cycle]), n(zone.cycles[cycle].size()),
-      nv(zone.locator->loop(l).size()), L(zone.locator->length(l)), cyc(zone.cycles[cycle]),
-      F(zone.first_points[cycle]), loop_xy(zone.locator->loop(l))
+    : m_zone(zone), m_fans(zone), m_projection(zone, cycle), m_costs(zone), c(cycle), l(zone.cycle_loop[cycle]),
+      n(zone.cycles[cycle].size()), nv(zone.locator->loop(l).size()), L(zone.locator->length(l)),
+      loop_xy(zone.locator->loop(l))
   {}
 
   // the strip of the cycle: see the file comment
   void build()
   {
-    project_first_points();
-    give_wide_corners_a_projection();
-    split_obtuse_corners();
-    if(!unwrap_along_loop()) return;
+    if(!m_projection.project()) return;
     const Strip_plan plan = best_plan();
-    m_cost_cache.clear();
+    m_costs.clear();
     add_plan(plan);
   }
 
 private:
-  // Projections of the first buffer points; those within a third of the layer's thickness
-  // of a loop vertex (along the loop) snap to it.
-  void project_first_points()
-  {
-    std::vector<Loop_locator::Hit>& hit = m_start.hit;
-    std::vector<double>& raw = m_raw;
-    std::vector<std::size_t>& snap = m_start.snap;
-    hit.resize(n);
-    raw.resize(n);
-    snap.assign(n, none);
-    for(std::size_t i = 0; i < n; ++i) {
-      hit[i] = m_zone.locator->closest(F[i], 2 * m_zone.local_size[cyc[i]], l);
-      raw[i] = m_zone.locator->param(hit[i]);
-      const double reach = 0.35 * hit[i].dist;
-      double best = reach;
-      for(std::size_t k : { hit[i].edge, (hit[i].edge + 1) % nv }) {
-        const double d = std::abs(cyclic(m_zone.locator->arc(l, k) - raw[i]));
-        if(d <= best) { best = d; snap[i] = k; }
-      }
-    }
-  }
-
-  // A corner wider than 135 degrees (obtuse or reflex) takes the node of the projection
-  // nearest to it: a fan of boundary edges around an F point there would be flat or
-  // concave at the corner (paper §5: such corners get a first buffer point of their own).
-  void give_wide_corners_a_projection()
-  {
-    const std::vector<double>& raw = m_raw;
-    std::vector<std::size_t>& snap = m_start.snap;
-    std::vector<std::size_t> by_param(n);
-    for(std::size_t i = 0; i < n; ++i) by_param[i] = i;
-    std::sort(by_param.begin(), by_param.end(), [&](std::size_t x, std::size_t y) { return raw[x] < raw[y]; });
-    std::vector<bool> vertex_taken(nv, false);
-    for(std::size_t i = 0; i < n; ++i) if(snap[i] != none) vertex_taken[snap[i]] = true;
-    for(std::size_t k = 0; k < nv; ++k) {
-      if(vertex_taken[k] || !m_zone.is_feature(l, k)) continue;
-      if(m_zone.domain_angle(l, k) <= 135.0) continue;
-      const double a = m_zone.locator->arc(l, k);
-      auto it = std::lower_bound(by_param.begin(), by_param.end(), a,
-                                 [&](std::size_t x, double v) { return raw[x] < v; });
-      std::size_t best = none;
-      double bd = HUGE_VAL;
-      for(int side = 0; side < 2; ++side) {
-        const std::size_t pos = std::size_t(((it - by_param.begin()) - side + std::ptrdiff_t(n)) % std::ptrdiff_t(n));
-        const std::size_t i = by_param[pos];
-        const double d = std::abs(cyclic(raw[i] - a));
-        if(snap[i] == none && d < bd) { bd = d; best = i; }
-      }
-      if(best != none) { snap[best] = k; vertex_taken[k] = true; }
-    }
-  }
-
-  // An obtuse corner whose node took one projection alone is split by the edge to its F point
-  // (sharp_corner_fans.h).
-  void split_obtuse_corners()
-  {
-    const std::vector<std::size_t>& snap = m_start.snap;
-    for(std::size_t i = 0; i < n; ++i) {
-      const std::size_t k = snap[i];
-      if(k != none && m_zone.is_feature(l, k) && m_zone.domain_angle(l, k) > 135.0 && !m_fans.needs_fan_of_three(l, k)
-         && snap[(i + n - 1) % n] != k && snap[(i + 1) % n] != k)
-        m_fans.turn_to_bisector(c, i, k);
-    }
-  }
-
-  // The strip starts at the first projection on no loop vertex, F point rot(0) at arclength
-  // m_origin ("O"). Unwrapped positions along the loop from there; a step backwards would fold
-  // the strip, so such a point shares its predecessor's node instead. False (a failure) if
-  // they do not wind once around the loop.
-  bool unwrap_along_loop()
-  {
-    const std::vector<double>& raw = m_raw;
-    std::vector<std::size_t>& snap = m_start.snap;
-    std::size_t& s0 = m_s0;
-    s0 = 0;
-    while(s0 < n && snap[s0] != none) ++s0;
-    if(s0 == n) { s0 = 0; snap[0] = none; }
-    const double O = m_origin = raw[s0];
-    std::vector<double>& P = m_start.P;
-    std::vector<std::size_t>& share = m_start.share;
-    std::vector<double> W(n);
-    P.resize(n);
-    share.assign(n, none);
-    W[0] = P[0] = O;
-    for(std::size_t r = 1; r < n; ++r) {
-      const std::size_t i = rot(r);
-      W[r] = W[r - 1] + cyclic(raw[i] - raw[rot(r - 1)]);
-      P[r] = snap[i] != none ? W[r] + cyclic(m_zone.locator->arc(l, snap[i]) - raw[i]) : W[r];
-      if(P[r] <= P[r - 1]) {
-        P[r] = P[r - 1];
-        share[r] = share[r - 1] == none ? r - 1 : share[r - 1];
-      }
-    }
-    const double winding = (W[n - 1] + cyclic(raw[s0] - raw[rot(n - 1)]) - O) / L;
-    if(std::abs(winding - 1) > 1e-6) {
-      m_zone.request_all(c);
-      m_zone.report.failure = "the first buffer points do not project once around their loop";
-      return false;
-    }
-    // no position past one turn of the loop (the start again)
-    for(std::size_t r = 0; r < n; ++r) P[r] = (std::min)(P[r], O + L);
-    return true;
-  }
-
   // The strip's pairing, with four F points on the node of each corner marked in `four_at`
   // (see may_take_four_fan_points()) and three on the others' (from the unwrapped
   // projections: a second plan starts afresh).
   Strip_plan plan_with(const std::vector<bool>& four_at)
   {
-    Projection proj = m_start;
-    proj.spread.assign(n, false);
-    gather_fan_points(proj, four_at);
-    spread_shared_nodes(proj, four_at);
+    const Strip_positions proj = m_projection.spread(four_at);
     std::vector<std::size_t> alias_vertex(n, none);
     std::vector<Node> nodes = candidate_nodes(proj, alias_vertex);
     keep_nodes_for_chord_tolerance(nodes);
@@ -233,141 +114,16 @@ private:
     return plan;
   }
 
-  // A corner wider than 225 degrees needs three F points on its node for a fan of three
-  // quads (see needs_fan_of_three()), four where `four_at` asks it: where fewer project onto
-  // it, the nearest neighbours (free, on their own nodes) join them.
-  void gather_fan_points(Projection& proj, const std::vector<bool>& four_at)
-  {
-    std::vector<double>& P = proj.P;
-    std::vector<std::size_t>& snap = proj.snap;
-    for(std::size_t a = 1; a + 1 < n; ++a) {
-      const std::size_t k = snap[rot(a)];
-      if(k == none || P[a - 1] == P[a] || !m_fans.needs_fan_of_three(l, k)) continue;
-      std::size_t lo = a, hi = a;
-      while(hi + 1 < n && P[hi + 1] == P[a]) ++hi;
-      const Point_2d corner = loop_xy[k];
-      auto free_point = [&](std::size_t r) {
-        return r > 0 && r + 1 < n && snap[rot(r)] == none && P[r - 1] != P[r] && P[r + 1] != P[r];
-      };
-      while(hi - lo + 1 < (four_at[k] ? 4u : 3u)) {
-        const bool before = free_point(lo - 1), after = hi + 2 < n && free_point(hi + 1);
-        if(!before && !after) break;
-        const double db = before ? length_2d(minus_2d(F[rot(lo - 1)], corner)) : HUGE_VAL;
-        const double da = after ? length_2d(minus_2d(F[rot(hi + 1)], corner)) : HUGE_VAL;
-        const std::size_t r = db <= da ? --lo : ++hi;
-        P[r] = P[a];
-        snap[rot(r)] = k;
-      }
-      a = hi;
-    }
-  }
-
-  // Points sharing a node (they project onto one reflex corner, or fold back) are spread
-  // along the loop around it, one node each, at about their own spacing, but for a fan's F
-  // points (keep_fan_points()), which stay on their corner's: the strip stays a ladder and the
-  // pairing is left free to fan where it pays.
-  void spread_shared_nodes(Projection& proj, const std::vector<bool>& four_at)
-  {
-    std::vector<double>& P = proj.P;
-    std::vector<std::size_t>& snap = proj.snap;
-    std::vector<std::size_t>& share = proj.share;
-    std::vector<Loop_locator::Hit>& hit = proj.hit;
-    std::vector<bool>& spread = proj.spread;
-    const double O = m_origin;
-    for(std::size_t a = 0; a < n;) {
-      std::size_t b = a;
-      while(b + 1 < n && P[b + 1] == P[a]) ++b;
-      const bool at_end = P[a] >= O + L;
-      if(b == a && !at_end) { ++a; continue; }
-      const double p0 = P[a];
-      const double before = a == 0 ? p0 : P[a - 1];
-      const double after = b + 1 < n ? P[b + 1] : O + L;
-      // the anchor keeps the node; at the start it must stay first, at the end nothing may
-      // reach the start again
-      std::size_t anchor = a == 0 ? 0 : (at_end ? n : (a + b) / 2);
-        // Around a corner wider than 225 degrees three of them (or four: `four_at`) stay on
-        // the corner's node: a fan of three (paper Fig. 8(d)).
-        std::size_t last_kept = anchor;
-        if(!at_end && snap[rot(a)] != none && m_fans.needs_fan_of_three(l, snap[rot(a)]))
-          keep_fan_points(proj, a, b, four_at, anchor, last_kept);
-      auto spacing = [&](std::size_t r1, std::size_t r2) {
-        return length_2d(minus_2d(F[rot(r1)], F[rot(r2)]));
-      };
-      if(anchor > a) { // a .. anchor-1 go before p0
-        const std::size_t cnt = (anchor == n ? b + 1 : anchor) - a;
-        const double room = (p0 - before) / double(cnt + 1);
-        double s = p0;
-        for(std::size_t r = (anchor == n ? b + 1 : anchor); r-- > a;) {
-          s -= (std::min)(room, spacing(r, r + 1 < n ? r + 1 : r));
-          P[r] = s;
-          snap[rot(r)] = none;
-          hit[rot(r)] = m_zone.locator->point_at_arclength(l, s);
-        }
-      }
-      if(anchor < n && b > last_kept) { // last_kept+1 .. b go after p0
-        const double room = (after - p0) / double(b - last_kept + 1);
-        double s = p0;
-        for(std::size_t r = last_kept + 1; r <= b; ++r) {
-          s += (std::min)(room, spacing(r, r - 1));
-          P[r] = s;
-          snap[rot(r)] = none;
-          hit[rot(r)] = m_zone.locator->point_at_arclength(l, s);
-        }
-      }
-      for(std::size_t r = a; r <= b; ++r) {
-        share[r] = r > anchor && r <= last_kept ? anchor : none;
-        spread[r] = true;
-      }
-      a = b + 1;
-    }
-  }
-
-  // Of the F points a .. b on the node of a corner wider than 225 degrees, the three (four
-  // where `four_at` asks) that stay there, first_kept (the new `anchor`) to `last_kept`. The
-  // pairing can make a node the apex of one F triangle per gap it bounds: two spread nodes
-  // leave the corner two quads, over 112.5 degrees each; three F points on it make a fan of
-  // three. A fan of three is opened (open_fan()).
-  void keep_fan_points(const Projection& proj, std::size_t a, std::size_t b, const std::vector<bool>& four_at,
-                       std::size_t& anchor, std::size_t& last_kept)
-  {
-    const std::vector<std::size_t>& snap = proj.snap;
-    const std::size_t k = snap[rot(a)], kept = four_at[k] ? 4 : 3;
-    std::size_t first_kept = a == 0 ? 0 : (std::max)(a, anchor - 1);
-    // a needle's F points wrap around its tip, so neither the bisector nor the fan's
-    // parallelogram below means much there (choosing by them leaves a fan quad far out)
-    const bool needle = m_zone.domain_angle(l, k) > 340.0;
-    // of more, those whose middle lies nearest the corner's bisector
-    if(a != 0 && b - a + 1 > kept && !needle) {
-      const Point_2d C = loop_xy[k];
-      const Point_2d bis = right_bisector(loop_xy[(k + nv - 1) % nv], C, loop_xy[(k + 1) % nv]);
-      double best = HUGE_VAL;
-      for(std::size_t s = a; s + kept - 1 <= b; ++s) {
-        Point_2d mid = normalized_2d(minus_2d(F[rot(s + 1)], C));
-        if(kept == 4) {
-          const Point_2d other = normalized_2d(minus_2d(F[rot(s + 2)], C));
-          mid = normalized_2d(Point_2d{ mid.x + other.x, mid.y + other.y });
-        }
-        const double d = dot_2d(mid, bis); // -1 on the bisector
-        if(d < best) { best = d; first_kept = s; }
-      }
-    }
-    last_kept = (std::min)(b, first_kept + kept - 1);
-    anchor = first_kept;
-    if(last_kept == first_kept + 2 && !needle)
-      m_fans.open_fan(c, rot(first_kept), rot(first_kept + 1), rot(last_kept), loop_xy[k],
-               loop_xy[(k + nv - 1) % nv], loop_xy[(k + 1) % nv]);
-  }
-
   // Candidate nodes, by parameter from O: loop vertices and the F points' own projections. A
   // projection on a vertex (to rounding) is that vertex; a second one shares it
   // (`alias_vertex`).
-  std::vector<Node> candidate_nodes(const Projection& proj, std::vector<std::size_t>& alias_vertex) const
+  std::vector<Node> candidate_nodes(const Strip_positions& proj, std::vector<std::size_t>& alias_vertex) const
   {
     const std::vector<double>& P = proj.P;
     const std::vector<std::size_t>& snap = proj.snap;
     const std::vector<std::size_t>& share = proj.share;
     const std::vector<Loop_locator::Hit>& hit = proj.hit;
-    const double O = m_origin;
+    const double O = m_projection.origin();
     std::vector<Node> nodes;
     std::vector<bool> snapped(nv, false);
     for(std::size_t r = 0; r < n; ++r)
@@ -447,7 +203,7 @@ private:
   // of the nearer projection beside it in the chain; the first node stays the first F
   // point's, and those spread around a corner stay its fan's. The chord that then spans the
   // projection's place must keep the nodes under it within the tolerance.
-  void take_over_projection_nodes(const Projection& proj, std::vector<Node>& candidates, std::vector<std::size_t>& alias,
+  void take_over_projection_nodes(const Strip_positions& proj, std::vector<Node>& candidates, std::vector<std::size_t>& alias,
                                   const std::vector<bool>& at) const
   {
     const std::vector<bool>& spread = proj.spread;
@@ -488,14 +244,14 @@ private:
 
   // The pairing of the strip from the candidate nodes (copies: a second plan starts afresh),
   // the vertices marked in `take_over_at` taking over projection nodes.
-  Strip_plan plan_strip(const Projection& proj, std::vector<Node> nodes, std::vector<std::size_t> alias_vertex,
+  Strip_plan plan_strip(const Strip_positions& proj, std::vector<Node> nodes, std::vector<std::size_t> alias_vertex,
                         const std::vector<bool>& take_over_at)
   {
     const std::vector<double>& P = proj.P;
     const std::vector<std::size_t>& snap = proj.snap;
     const std::vector<std::size_t>& share = proj.share;
     const std::vector<Loop_locator::Hit>& hit = proj.hit;
-    const double O = m_origin;
+    const double O = m_projection.origin();
     Strip_nodes strip;
     std::vector<std::size_t>& gid = strip.gid;
     std::vector<std::size_t>& g = strip.g;
@@ -554,7 +310,7 @@ private:
     const std::size_t first_candidate = m_zone.xy.size();
     for(std::size_t r = 0; r < n; ++r)
       add_extra_candidate(strip, r, extra, sites);
-    Strip_result res = pair_strip(strip.fid, strip.gid, strip.g, extra, [this](const Quad& q) { return strip_cost(q); });
+    Strip_result res = pair_strip(strip.fid, strip.gid, strip.g, extra, [this](const Quad& q) { return m_costs.strip_cost(q); });
     forget_candidates(first_candidate);
     insert_chosen_extra_nodes(strip, extra, sites, first_candidate, res);
     return res;
@@ -607,11 +363,7 @@ private:
   {
     m_zone.xy.resize(first_candidate);
     m_zone.corner_angle.resize((std::min)(m_zone.corner_angle.size(), first_candidate));
-    for(auto it = m_cost_cache.begin(); it != m_cost_cache.end();) {
-      bool candidate = false;
-      for(std::size_t v : it->first) candidate = candidate || v >= first_candidate;
-      it = candidate ? m_cost_cache.erase(it) : std::next(it);
-    }
+    m_costs.forget_points_from(first_candidate);
   }
 
   // the extra nodes the pairing took, made mesh points and put into the chain, and into the
@@ -658,7 +410,7 @@ private:
       std::vector<std::size_t> removed;
       for(const Quad& q : best.quads) {
         std::size_t remove = none;
-        if(cost(q) < 1000.0) continue;
+        if(m_costs.cost(q) < 1000.0) continue;
         std::vector<std::size_t> pos;
         for(std::size_t v : q) {
           auto it = std::find(gid.begin(), gid.end(), v);
@@ -711,7 +463,7 @@ private:
     const std::unordered_map<std::size_t, std::size_t> loop_vertex_of_point = loop_vertices_by_point();
     std::vector<std::size_t> fans;
     for(const Quad& q : p.best.quads) {
-      const int k = fixed_angle_out_of_range(q);
+      const int k = m_costs.fixed_angle_out_of_range(q);
       auto it = k < 0 ? loop_vertex_of_point.end() : loop_vertex_of_point.find(q[std::size_t(k)]);
       if(it != loop_vertex_of_point.end()) fans.push_back(it->second);
     }
@@ -745,7 +497,7 @@ private:
       m_zone.mesh.points[fbase + i] = saved[i];
       m_zone.first_points[c][i] = m_zone.xy[fbase + i] = to_point_2d(saved[i]);
     }
-    m_cost_cache.clear(); // it knows quads by their points' ids
+    m_costs.clear(); // it knows quads by their points' ids
   }
 
   // The plan with three F points at each corner's fan, or with four where a corner over 270
@@ -760,7 +512,7 @@ private:
       std::vector<bool> four_at(nv, false);
       bool any = false;
       for(const Quad& q : plan.best.quads) {
-        const int k = wide_side_of_reflex_fan(q);
+        const int k = m_costs.wide_side_of_reflex_fan(q);
         auto it = k < 0 ? loop_vertex_of_point.end() : loop_vertex_of_point.find(q[std::size_t(k)]);
         if(it != loop_vertex_of_point.end() && m_fans.may_take_four_fan_points(l, it->second))
           any = four_at[it->second] = true;
@@ -802,78 +554,9 @@ private:
   }
 
   // the F point at position r from the strip's start
-  std::size_t rot(std::size_t r) const { return (m_s0 + r) % n; }
-  // an arclength difference taken into (-L/2, L/2]
-  double cyclic(double d) const
-  {
-    d = std::fmod(d, L);
-    if(d > L / 2) d -= L;
-    if(d < -L / 2) d += L;
-    return d;
-  }
+  std::size_t rot(std::size_t r) const { return m_projection.rot(r); }
+  double cyclic(double d) const { return m_projection.cyclic(d); }
 
-  double cost(const Quad& q) const
-  {
-    if(q[0] == none) return 2000.0;
-    auto it = m_cost_cache.find(q);
-    if(it != m_cost_cache.end()) return it->second;
-    const double b = m_zone.quad_cost(q);
-    m_cost_cache.emplace(q, b);
-    return b;
-  }
-
-  // A quad's cost in the strip's pairing: an angle out of [45, 135] at a boundary node between
-  // two others (the middle of a fan of boundary edges) is the boundary's own angle there,
-  // which no later move changes (an input vertex stays; a point on an input edge only slides
-  // along it), unlike a quad sheared by its F points, which the optimizer straightens: it
-  // costs as much as a hundred degrees more, so that the pairing shears a row rather than span
-  // a wide boundary angle with one quad. So does a quad over 135 degrees on a side of a corner
-  // over 270 degrees (wide_side_of_reflex_fan()).
-  double strip_cost(const Quad& q) const
-  {
-    const double b = cost(q);
-    if(b <= 45.0 + angle_tolerance || b >= 1000.0) return b;
-    return fixed_angle_out_of_range(q) >= 0 || wide_side_of_reflex_fan(q) >= 0 ? b + 100.0 : b;
-  }
-
-  // the corner (0 to 3) of q at a boundary node between two others whose angle is out of
-  // [45, 135] and not forced, or -1
-  int fixed_angle_out_of_range(const Quad& q) const
-  {
-    for(int k = 0; k < 4; ++k) {
-      const std::size_t v = q[k], u = q[(k + 3) % 4], w = q[(k + 1) % 4];
-      if(!on_boundary_chain(v) || !on_boundary_chain(u) || !on_boundary_chain(w)) continue;
-      const double angle = corner_angle_degrees(m_zone.xy[u], m_zone.xy[v], m_zone.xy[w]);
-      if(std::abs(angle - 90.0) > 45.0 + angle_tolerance && !m_zone.forced_angle(v, angle)) return k;
-    }
-    return -1;
-  }
-
-  // the corner (0 to 3) of q with over 135 degrees at an input corner of 270 degrees or more
-  // (270 to rounding: a fan of two fits exactly 270 only as 135 + 135), between a boundary node
-  // and an F point, or -1: a side of a fan of two there, or of a fan of three with an F point
-  // off to one side. A fan of two at such a corner keeps over 135 degrees in one of its quads
-  // however its F point moves, unlike a fan of three whose middle F point is flat for now: the
-  // later moves open that one.
-  int wide_side_of_reflex_fan(const Quad& q) const
-  {
-    for(int k = 0; k < 4; ++k) {
-      const std::size_t v = q[k], u = q[(k + 3) % 4], w = q[(k + 1) % 4];
-      if(!(m_zone.input_corner_angle(v) > 270.0 - angle_tolerance) || on_boundary_chain(u) == on_boundary_chain(w)) continue;
-      if(corner_angle_degrees(m_zone.xy[u], m_zone.xy[v], m_zone.xy[w]) > 135.0 + angle_tolerance) return k;
-    }
-    return -1;
-  }
-
-  // an input vertex, a point on an input edge, or a gap's candidate extra node (an id past the
-  // mesh's points while the strip is paired)
-  bool on_boundary_chain(std::size_t v) const
-  {
-    return m_zone.is_input_vertex(v) || m_zone.slides.count(v) != 0 || v >= m_zone.mesh.points.size();
-  }
-
-  // whether the chord between the chain neighbours of node k stays within the tolerance of
-  // the loop between them (taking node k out must not pull the boundary away)
   bool chord_within_tolerance(std::size_t l, const std::vector<std::size_t>& gid,
                               const std::vector<double>& param, std::size_t k) const
   {
@@ -891,30 +574,14 @@ private:
     return point_segment_distance(m_zone.xy[gid[k]], A, B) <= m_zone.chord_tolerance;
   }
 
-  struct Quad_hash
-  {
-    std::size_t operator()(const Quad& q) const
-    {
-      std::size_t h = 0;
-      for(std::size_t v : q) h = h * 0x9E3779B97F4A7C15ull + v;
-      return h ^ (h >> 29);
-    }
-  };
-
   Buffer_zone<K>& m_zone;
   Sharp_corner_fans<K> m_fans;
+  Strip_projection<K> m_projection;
+  Strip_quad_costs<K> m_costs;
   // the cycle, its loop, the number of F points and of loop vertices, the loop's length
   const std::size_t c, l, n, nv;
   const double L;
-  const std::vector<std::size_t>& cyc;
-  const std::vector<Point_2d>& F;
   const std::vector<Point_2d>& loop_xy;
-  std::vector<double> m_raw; // each F point's arclength along the loop
-  Projection m_start;        // the unwrapped projections every plan starts from
-  std::size_t m_s0 = 0;
-  double m_origin = 0;
-  // quad costs while the strip is paired (its points do not move meanwhile)
-  mutable std::unordered_map<Quad, double, Quad_hash> m_cost_cache;
 };
 
 /// Stage "buffer2" (paper §4.6) on one buffer zone: the strip of each cycle (Buffer_strip).

@@ -1,0 +1,124 @@
+// Copyright (c) 2026 Quad_mesher_2 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Quad_mesher_2 developers
+//
+// Paper §4.6, what a quad costs in the second buffer layer's pairing: its deviation from
+// right angles (Buffer_zone::quad_cost()), more where the boundary fixes an angle out of
+// range, cached while a strip is paired.
+
+#ifndef CGAL_QUAD_MESHER_2_INTERNAL_STRIP_COSTS_H
+#define CGAL_QUAD_MESHER_2_INTERNAL_STRIP_COSTS_H
+
+#include <CGAL/Quad_mesher_2/internal/buffer_zone.h>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <iterator>
+#include <unordered_map>
+
+namespace CGAL {
+namespace Quad_mesher_2 {
+namespace internal {
+
+/// The costs of the quads one strip's pairing tries (see the file comment). The cache knows
+/// quads by their points' ids: it is cleared when the points move.
+template <class K>
+class Strip_quad_costs : Buffer_tolerances
+{
+  typedef std::array<std::size_t, 4> Quad;
+
+public:
+  explicit Strip_quad_costs(const Buffer_zone<K>& zone) : m_zone(zone) {}
+
+  void clear() { m_cache.clear(); }
+  /// forgets the quads with a point `first` or later (candidate points that are gone)
+  void forget_points_from(std::size_t first)
+  {
+    for(auto it = m_cache.begin(); it != m_cache.end();) {
+      bool candidate = false;
+      for(std::size_t v : it->first) candidate = candidate || v >= first;
+      it = candidate ? m_cache.erase(it) : std::next(it);
+    }
+  }
+
+  double cost(const Quad& q) const
+  {
+    if(q[0] == none) return 2000.0;
+    auto it = m_cache.find(q);
+    if(it != m_cache.end()) return it->second;
+    const double b = m_zone.quad_cost(q);
+    m_cache.emplace(q, b);
+    return b;
+  }
+
+  // A quad's cost in the strip's pairing: an angle out of [45, 135] at a boundary node between
+  // two others (the middle of a fan of boundary edges) is the boundary's own angle there,
+  // which no later move changes (an input vertex stays; a point on an input edge only slides
+  // along it), unlike a quad sheared by its F points, which the optimizer straightens: it
+  // costs as much as a hundred degrees more, so that the pairing shears a row rather than span
+  // a wide boundary angle with one quad. So does a quad over 135 degrees on a side of a corner
+  // over 270 degrees (wide_side_of_reflex_fan()).
+  double strip_cost(const Quad& q) const
+  {
+    const double b = cost(q);
+    if(b <= 45.0 + angle_tolerance || b >= 1000.0) return b;
+    return fixed_angle_out_of_range(q) >= 0 || wide_side_of_reflex_fan(q) >= 0 ? b + 100.0 : b;
+  }
+
+  // the corner (0 to 3) of q at a boundary node between two others whose angle is out of
+  // [45, 135] and not forced, or -1
+  int fixed_angle_out_of_range(const Quad& q) const
+  {
+    for(int k = 0; k < 4; ++k) {
+      const std::size_t v = q[k], u = q[(k + 3) % 4], w = q[(k + 1) % 4];
+      if(!on_boundary_chain(v) || !on_boundary_chain(u) || !on_boundary_chain(w)) continue;
+      const double angle = corner_angle_degrees(m_zone.xy[u], m_zone.xy[v], m_zone.xy[w]);
+      if(std::abs(angle - 90.0) > 45.0 + angle_tolerance && !m_zone.forced_angle(v, angle)) return k;
+    }
+    return -1;
+  }
+
+  // the corner (0 to 3) of q with over 135 degrees at an input corner of 270 degrees or more
+  // (270 to rounding: a fan of two fits exactly 270 only as 135 + 135), between a boundary node
+  // and an F point, or -1: a side of a fan of two there, or of a fan of three with an F point
+  // off to one side. A fan of two at such a corner keeps over 135 degrees in one of its quads
+  // however its F point moves, unlike a fan of three whose middle F point is flat for now: the
+  // later moves open that one.
+  int wide_side_of_reflex_fan(const Quad& q) const
+  {
+    for(int k = 0; k < 4; ++k) {
+      const std::size_t v = q[k], u = q[(k + 3) % 4], w = q[(k + 1) % 4];
+      if(!(m_zone.input_corner_angle(v) > 270.0 - angle_tolerance) || on_boundary_chain(u) == on_boundary_chain(w)) continue;
+      if(corner_angle_degrees(m_zone.xy[u], m_zone.xy[v], m_zone.xy[w]) > 135.0 + angle_tolerance) return k;
+    }
+    return -1;
+  }
+
+  // an input vertex, a point on an input edge, or a gap's candidate extra node (an id past the
+  // mesh's points while the strip is paired)
+  bool on_boundary_chain(std::size_t v) const
+  {
+    return m_zone.is_input_vertex(v) || m_zone.slides.count(v) != 0 || v >= m_zone.mesh.points.size();
+  }
+
+private:
+  struct Quad_hash
+  {
+    std::size_t operator()(const Quad& q) const
+    {
+      std::size_t h = 0;
+      for(std::size_t v : q) h = h * 0x9E3779B97F4A7C15ull + v;
+      return h ^ (h >> 29);
+    }
+  };
+
+  const Buffer_zone<K>& m_zone;
+  mutable std::unordered_map<Quad, double, Quad_hash> m_cache;
+};
+
+} // namespace internal
+} // namespace Quad_mesher_2
+} // namespace CGAL
+
+#endif // CGAL_QUAD_MESHER_2_INTERNAL_STRIP_COSTS_H
