@@ -415,13 +415,40 @@ int run(const Options& opt)
   return 0;
 }
 
-} // namespace
-
-int main(int argc, char** argv)
+// sizes: finite and not negative (CLI's own check lets NaN through and prints inf in full)
+CLI::Validator finite_size()
 {
-  Options opt;
-  CLI::App app{ "quad-mesher: all-quadrilateral meshes with guaranteed angles "
-                "(quadtree method of Liang, Ebeida and Zhang, IMR 2009)" };
+  return CLI::Validator(
+    [](std::string& text) -> std::string {
+      char* end = nullptr;
+      const double v = std::strtod(text.c_str(), &end);
+      if(end == text.c_str() || *end != '\0' || !std::isfinite(v) || v < 0)
+        return "must be a finite number, 0 or more, not '" + text + "'";
+      return std::string();
+    },
+    "FINITE NONNEGATIVE");
+}
+
+// a whole number of cells (CLI's own check prints 0 in full and takes 1e20, beyond 64 bits)
+CLI::Validator cell_budget()
+{
+  return CLI::Validator(
+    [](std::string& text) -> std::string {
+      errno = 0;
+      char* end = nullptr;
+      const unsigned long long v = std::strtoull(text.c_str(), &end, 10);
+      if(end == text.c_str() || *end != '\0' || text.find('-') != std::string::npos || errno == ERANGE || v < 1
+         || v > max_cell_budget)
+        return "must be a whole number from 1 to " + std::to_string(max_cell_budget) + ", not '" + text + "'";
+      return std::string();
+    },
+    "1.." + std::to_string(max_cell_budget));
+}
+
+// the command line's options into `opt`; `spline_only` gets the options that apply only with
+// --curves spline
+void add_options(CLI::App& app, Options& opt, std::array<CLI::Option*, 2>& spline_only)
+{
   app.add_option("input", opt.input,
                  "input: Triangle .poly or .node, a plain 'x y' point file (.xy .txt .pts .dat), "
                  "or WKT (.wkt)")->required();
@@ -452,80 +479,57 @@ int main(int argc, char** argv)
                  "how the input's loops are read: 'polygon' (as given) or 'spline' (closed cubic "
                  "splines through their points, decomposed into segments, paper §4.1)")
     ->check(CLI::IsMember({ "polygon", "spline" }));
-  CLI::Option* max_turning_angle = app.add_option("--max-turning-angle", opt.max_turning_angle,
+  spline_only[0] = app.add_option("--max-turning-angle", opt.max_turning_angle,
                  "with --curves spline: largest turn between neighbouring segments, degrees")
     ->check(CLI::Range(0.1, 90.0)); // finer gives millions of boundary vertices on a circle
-  // sizes: finite and not negative (CLI's own check let NaN through to the library, exit 1,
-  // and printed the largest double's 310 digits for inf)
-  const CLI::Validator finite_size(
-    [](std::string& text) -> std::string {
-      char* end = nullptr;
-      const double v = std::strtod(text.c_str(), &end);
-      if(end == text.c_str() || *end != '\0' || !std::isfinite(v) || v < 0)
-        return "must be a finite number, 0 or more, not '" + text + "'";
-      return std::string();
-    },
-    "FINITE NONNEGATIVE");
-  CLI::Option* chord_error = app.add_option("--chord-error", opt.chord_error,
+  spline_only[1] = app.add_option("--chord-error", opt.chord_error,
                  "with --curves spline: largest distance between a segment and its curve (0: 1e-3 "
                  "of the bounding-box diagonal)")
-    ->check(finite_size);
+    ->check(finite_size());
   app.add_option("--max-size", opt.max_size,
                  "largest cell side (0: no bound); for a domain, of the cells meeting the bounding "
                  "box of its points")
-    ->check(finite_size);
+    ->check(finite_size());
   app.add_option("--min-size", opt.min_size,
                  "smallest cell side (0: no bound); with --stop-after quadtree input points "
                  "closer than this may share a cell, with the points stage they are an error")
-    ->check(finite_size);
+    ->check(finite_size());
   app.add_option("--max-depth", opt.max_depth,
                  "deepest quadtree level; a sizing that needs more is an error")
     ->check(CLI::Range(0, QM::Mesh_criteria_2<CGAL::Epick>::max_supported_depth));
-  // a whole number of cells (CLI's own check printed the largest double's 310 digits for 0,
-  // and took 1e20, beyond 64 bits, without a word)
-  const CLI::Validator cell_budget(
-    [](std::string& text) -> std::string {
-      errno = 0;
-      char* end = nullptr;
-      const unsigned long long v = std::strtoull(text.c_str(), &end, 10);
-      if(end == text.c_str() || *end != '\0' || text.find('-') != std::string::npos || errno == ERANGE || v < 1
-         || v > max_cell_budget)
-        return "must be a whole number from 1 to " + std::to_string(max_cell_budget) + ", not '" + text + "'";
-      return std::string();
-    },
-    "1.." + std::to_string(max_cell_budget));
   app.add_option("--max-cells", opt.max_cells,
                  "the cell budget: most quadtree cells to make before stopping with an error (a memory guard: "
                  "the quadtree takes about 110 bytes a cell)")
-    ->check(cell_budget);
+    ->check(cell_budget());
   app.add_flag("-v,--verbose", opt.verbose, "print what each stage did and its time");
-  try {
-    app.parse(argc, argv);
-  } catch(const CLI::ParseError& e) {
-    // CLI11 prints the message; its own codes (105, 106, ...) become the documented 2
-    return app.exit(e) == 0 ? 0 : 2;
-  }
+}
 
-  // The spline options do nothing without splines: taking them silently would hide that.
-  for(const CLI::Option* spline_only : { max_turning_angle, chord_error })
-    if(spline_only->count() > 0 && opt.curves != "spline") {
-      std::cerr << "quad-mesher: " << spline_only->get_name() << " applies only with --curves spline\n";
-      return 2;
+// The spline options do nothing without splines: taking them silently would hide that.
+bool spline_options_have_splines(const Options& opt, const std::array<CLI::Option*, 2>& spline_only)
+{
+  for(const CLI::Option* option : spline_only)
+    if(option->count() > 0 && opt.curves != "spline") {
+      std::cerr << "quad-mesher: " << option->get_name() << " applies only with --curves spline\n";
+      return false;
     }
+  return true;
+}
 
-  // Never write over the input, and never write one file twice.
+// Never write over the input, and never write one file twice; every output's format known.
+bool outputs_are_usable(const Options& opt)
+{
   std::vector<std::string> targets = opt.outputs;
   if(!opt.report.empty())
     targets.push_back(opt.report);
   for(std::size_t a = 0; a < targets.size(); ++a) {
     if(same_file(targets[a], opt.input)) {
       std::cerr << "quad-mesher: output '" << targets[a] << "' is the input file\n";
-      return 2;
+      return false;
     }
     for(std::size_t b = 0; b < a; ++b)
       if(same_file(targets[a], targets[b])) {
         std::cerr << "quad-mesher: '" << targets[a] << "' is named twice as an output\n";
-        return 2;
+        return false;
       }
   }
   for(const std::string& out : opt.outputs) {
@@ -534,9 +538,30 @@ int main(int argc, char** argv)
        == output_extensions.end()) {
       std::cerr << "quad-mesher: output '" << out
                 << "': unknown format (use .msh, .vtu, .off or .svg)\n";
-      return 2;
+      return false;
     }
   }
+  return true;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  Options opt;
+  CLI::App app{ "quad-mesher: all-quadrilateral meshes with guaranteed angles "
+                "(quadtree method of Liang, Ebeida and Zhang, IMR 2009)" };
+  std::array<CLI::Option*, 2> spline_only{};
+  add_options(app, opt, spline_only);
+  try {
+    app.parse(argc, argv);
+  } catch(const CLI::ParseError& e) {
+    // CLI11 prints the message; its own codes (105, 106, ...) become the documented 2
+    return app.exit(e) == 0 ? 0 : 2;
+  }
+
+  if(!spline_options_have_splines(opt, spline_only) || !outputs_are_usable(opt))
+    return 2;
   try {
     if(opt.kernel == "epeck")
       return run<CGAL::Epeck>(opt);
