@@ -25,9 +25,9 @@ traits (every `..._object()` in `include/`):
 - the buffer stages (`internal/buffer_zone.h` and the stage headers that work on it):
   `Construct_point_2`, `Compute_x_2` and `Compute_y_2` (points to and from the doubles the
   searches move them in, new boundary points on an input segment), `Orientation_2` (the
-  exact check of every quad they make or change), and `Construct_segment_2`,
-  `Construct_bbox_2` and `Compare_squared_distance_2` (whether a moved core boundary edge
-  keeps its clearance from the boundary).
+  exact check of every quad they make or change), and `Construct_segment_2` and
+  `Compare_squared_distance_2` (whether a moved core boundary edge keeps its clearance from
+  the boundary).
 
 The narrow-region sizing (`internal/narrow_regions.h`) needs only the coordinates and
 `Construct_point_2`: it works in `double`. A test (`test/test_traits_and_headers.cpp`)

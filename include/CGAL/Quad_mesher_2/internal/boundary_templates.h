@@ -42,7 +42,7 @@ template <class K>
 class Boundary_templates : Buffer_tolerances
 {
   typedef typename K::FT FT;
-  typedef std::array<std::size_t, 4> Quad;
+  typedef Quad_vertices Quad;
 
 public:
   explicit Boundary_templates(Buffer_zone<K>& zone) : m_zone(zone) {}

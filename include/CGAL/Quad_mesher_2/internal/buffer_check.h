@@ -27,7 +27,7 @@ namespace internal {
 template <class K>
 class Buffer_check : Buffer_tolerances
 {
-  typedef std::array<std::size_t, 4> Quad;
+  typedef Quad_vertices Quad;
 
 public:
   explicit Buffer_check(Buffer_zone<K>& zone) : m_zone(zone) {}

@@ -28,7 +28,7 @@ class Buffer_optimizer : Buffer_tolerances
 {
   typedef typename K::FT FT;
   typedef typename K::Point_2 Point_2;
-  typedef std::array<std::size_t, 4> Quad;
+  typedef Quad_vertices Quad;
 
 public:
   explicit Buffer_optimizer(Buffer_zone<K>& zone)

@@ -16,7 +16,6 @@
 #include <CGAL/Quad_mesher_2/Domain_loops_2.h>
 #include <CGAL/Quad_mesher_2/Quad_mesh_2.h>
 #include <CGAL/Quad_mesher_2/internal/buffer_tolerances.h>
-#include <CGAL/Quad_mesher_2/internal/buffer_zone_clearance.h>
 #include <CGAL/Quad_mesher_2/internal/loop_locator.h>
 #include <CGAL/Quad_mesher_2/internal/mesh_adjacency.h>
 #include <CGAL/Quad_mesher_2/internal/quad_geometry.h>
@@ -48,6 +47,7 @@ struct Refinement_requests
   std::vector<std::pair<Point_2d, double>> for_angles;
 };
 
+/// The buffer stages' shared state on one core mesh (see the file comment).
 template <class K>
 class Buffer_zone : public Buffer_tolerances
 {
@@ -55,7 +55,7 @@ public:
   typedef typename K::FT FT;
   typedef typename K::Point_2 Point_2;
   typedef Quad_mesh_2<Point_2> Mesh;
-  typedef std::array<std::size_t, 4> Quad;
+  typedef Quad_vertices Quad;
 
   // a new boundary point: it may slide along its input edge between its chain neighbours
   struct Slide
@@ -69,7 +69,6 @@ public:
     : mesh(core), local_size(core_size), domain(input), loops(input_loops), traits(kernel)
   {
     locator = make_loop_locator(domain, loops);
-    boundary = std::make_unique<Domain_segments<K>>(domain, loops, traits);
     chord_tolerance = 1e-3 * locator->diagonal();
     xy.reserve(mesh.points.capacity()); // the room the clearance left for the layers' points
     xy.resize(mesh.points.size());
@@ -78,8 +77,8 @@ public:
     core_points = mesh.points.size();
   }
 
-  /// Matches the core's boundary loops with the domain's; false (with `report().failure` and
-  /// refinement requests) if they do not match one to one.
+  /// Matches the core's boundary loops with the domain's; false (with `report.failure` and
+  /// `requests`) if they do not match one to one.
   bool match_loops()
   {
     quads_at = std::make_unique<Vertex_quads>(mesh.quads, mesh.points.size());
@@ -230,20 +229,24 @@ public:
 
   // Whether segment (a, b) keeps more than `clear` from every boundary segment, decided by
   // the kernel's exact Compare_squared_distance_2 on a and b as kernel points (the templates'
-  // clearance of the core from the boundary).
+  // clearance of the core from the boundary). The locator's boxes, of the loops' vertices in
+  // doubles, find the candidates: the query box is widened past their rounding.
   bool clear_of_boundary(const Point_2d& a, const Point_2d& b, double clear) const
   {
     const auto point = traits.construct_point_2_object();
     const typename K::Segment_2 ab = traits.construct_segment_2_object()(point(FT(a.x), FT(a.y)), point(FT(b.x), FT(b.y)));
     const FT clear2 = FT(clear) * FT(clear);
     const auto compare = traits.compare_squared_distance_2_object();
+    const auto segment = traits.construct_segment_2_object();
     // the boxes within `clear` of the segment's, widened past the rounding of its corners
     const double r = clear * (1 + 1e-6)
                      + 4 * std::numeric_limits<double>::epsilon() * (std::max)({ std::abs(a.x), std::abs(a.y), std::abs(b.x), std::abs(b.y) });
     const Bbox_2 box((std::min)(a.x, b.x) - r, (std::min)(a.y, b.y) - r, (std::max)(a.x, b.x) + r, (std::max)(a.y, b.y) + r);
     bool clear_of = true;
-    boundary->query(box, [&](std::size_t s) {
-      if(clear_of && compare(ab, boundary->segment(s), clear2) != LARGER) clear_of = false;
+    locator->edges_meeting(box, [&](std::size_t l, std::size_t k) {
+      const auto& lv = loops.loops[l].vertices;
+      if(clear_of && compare(ab, segment(domain.points[lv[k]], domain.points[lv[(k + 1) % lv.size()]]), clear2) != LARGER)
+        clear_of = false;
     });
     return clear_of;
   }
@@ -390,7 +393,6 @@ public:
   const Domain_loops_2<K>& loops;
   K traits;
   std::unique_ptr<Loop_locator> locator;
-  std::unique_ptr<Domain_segments<K>> boundary; // the loops' segments, for exact decisions
   // the quads at each vertex from match_loops() to apply_boundary_templates(), which add none
   std::unique_ptr<Vertex_quads> quads_at;
   std::vector<Point_2d> xy;

@@ -32,7 +32,7 @@ namespace internal {
 template <class K>
 class Connectivity_templates : Buffer_tolerances
 {
-  typedef std::array<std::size_t, 4> Quad;
+  typedef Quad_vertices Quad;
 
 public:
   explicit Connectivity_templates(Buffer_zone<K>& zone) : m_zone(zone), m_fans(zone) {}
@@ -50,8 +50,9 @@ public:
   {
     auto& cyc = m_zone.cycles[c];
     const std::size_t n = cyc.size();
-    Notch notch(m_zone, cyc[(i + n - 2) % n], cyc[(i + n - 1) % n], cyc[i], cyc[(i + 1) % n], cyc[(i + 2) % n]);
-    if(!may_fill(notch)) return;
+    const std::size_t a = cyc[(i + n - 1) % n], b = cyc[i], c1 = cyc[(i + 1) % n];
+    if(!may_fill(b, right_side_angle(m_zone.xy[a], m_zone.xy[b], m_zone.xy[c1]))) return;
+    Notch notch(m_zone, cyc[(i + n - 2) % n], a, b, c1, cyc[(i + 2) % n]);
     auto consider = [&notch](const Point_2d& y) { return notch.consider(y); };
     // |BY| = 1.01 s: at s (template 1(a)'s 0.71 s diagonal) a lattice notch's quad has exactly
     // 135 degrees at Y, in or out by rounding, and a scaled domain's choice would differ
@@ -149,7 +150,7 @@ private:
   {
     Notch(const Buffer_zone<K>& zone, std::size_t a2_, std::size_t a_, std::size_t b_, std::size_t c1_, std::size_t c2_)
       : z(zone), a2(a2_), a(a_), b(b_), c1(c1_), c2(c2_),
-        beta(right_side_angle(z.xy[a], z.xy[b], z.xy[c1])), d(right_bisector(z.xy[a], z.xy[b], z.xy[c1])),
+        d(right_bisector(z.xy[a], z.xy[b], z.xy[c1])),
         s(0.5 * (length_2d(minus_2d(z.xy[a], z.xy[b])) + length_2d(minus_2d(z.xy[c1], z.xy[b])))),
         clear(0.25 * z.local_size[b])
     {}
@@ -209,7 +210,6 @@ private:
 
     const Buffer_zone<K>& z;
     const std::size_t a2, a, b, c1, c2;
-    const double beta;
     const Point_2d d; // the unit bisector of beta, into the buffer
     const double s;   // the mean length of the notch's two edges
     const double clear;
@@ -223,10 +223,11 @@ private:
   // notch changed the strip's pairing for the worse. Nor is a notch that faces a corner
   // needing a fan of three (its nearest boundary point is that corner): the notch is the
   // fan's room, and filling it squeezes the fan's quads.
-  bool may_fill(const Notch& notch) const
+  // (b: the notch's vertex, beta: its buffer-side angle)
+  bool may_fill(std::size_t b, double beta) const
   {
-    if(notch.beta >= 112.5 - angle_tolerance || (notch.beta >= 95.0 && m_zone.near_input_corner(notch.b))) return false;
-    const Loop_locator::Hit h = m_zone.locator->closest(m_zone.xy[notch.b], 2 * m_zone.local_size[notch.b]);
+    if(beta >= 112.5 - angle_tolerance || (beta >= 95.0 && m_zone.near_input_corner(b))) return false;
+    const Loop_locator::Hit h = m_zone.locator->closest(m_zone.xy[b], 2 * m_zone.local_size[b]);
     const std::size_t nv = m_zone.locator->loop(h.loop).size();
     return !((h.t <= 0 && m_fans.needs_fan_of_three(h.loop, h.edge))
              || (h.t >= 1 && m_fans.needs_fan_of_three(h.loop, (h.edge + 1) % nv)));

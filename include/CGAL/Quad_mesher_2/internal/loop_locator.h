@@ -98,6 +98,13 @@ public:
     }
   }
 
+  /// calls `f(l, k)` for every edge k of loop l (vertex k to k + 1) whose box meets `box`
+  template <class F>
+  void edges_meeting(const Bbox_2& box, F&& f) const
+  {
+    m_tree->query(box, [&](std::size_t s) { f(m_edge_of[s][0], m_edge_of[s][1]); });
+  }
+
   /// the point of loop `l` at arclength `s` from its vertex 0 (modulo the loop's length)
   Hit point_at_arclength(std::size_t l, double s) const
   {

@@ -47,7 +47,7 @@ template <class K>
 class Buffer_strip : Buffer_tolerances
 {
   typedef typename K::Point_2 Point_2;
-  typedef std::array<std::size_t, 4> Quad;
+  typedef Quad_vertices Quad;
 
   // a candidate node of the boundary chain: a loop vertex or an F point's projection (its owner)
   struct Node { double param; std::size_t vertex; std::size_t owner; Point_2d xy; bool keep; };

@@ -26,7 +26,7 @@ namespace internal {
 template <class K>
 class Strip_quad_costs : Buffer_tolerances
 {
-  typedef std::array<std::size_t, 4> Quad;
+  typedef Quad_vertices Quad;
 
 public:
   explicit Strip_quad_costs(const Buffer_zone<K>& zone) : m_zone(zone) {}

@@ -51,7 +51,7 @@ template <class K>
 class Template_search : Buffer_tolerances
 {
   typedef typename K::FT FT;
-  typedef std::array<std::size_t, 4> Quad;
+  typedef Quad_vertices Quad;
 
 public:
   explicit Template_search(Buffer_zone<K>& zone) : m_zone(zone) {}
