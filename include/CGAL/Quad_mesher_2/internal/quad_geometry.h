@@ -10,6 +10,8 @@
 #ifndef CGAL_QUAD_MESHER_2_INTERNAL_QUAD_GEOMETRY_H
 #define CGAL_QUAD_MESHER_2_INTERNAL_QUAD_GEOMETRY_H
 
+#include <CGAL/Quad_mesher_2/internal/approximate_kernel.h>
+
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
