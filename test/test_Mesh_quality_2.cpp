@@ -276,15 +276,15 @@ TEST(MeshQuality2, NearDuplicatePairsMatchAllPairs)
   for(int k = 0; k < 300; ++k) {
     const Point_2d base = pts[std::size_t(uniform() * 900)]; // a copy: push_back may reallocate pts
     const double dx = (uniform() - 0.5) * 3 * tol, dy = (uniform() - 0.5) * 3 * tol;
-    pts.push_back(Point_2d{ base.x + dx, base.y + dy });
-    if(k % 3 == 0) pts.push_back(Point_2d{ base.x + dx, base.y + dy + (k % 2 ? tol : 2 * tol) });
+    pts.push_back(Point_2d{ base.x() + dx, base.y() + dy });
+    if(k % 3 == 0) pts.push_back(Point_2d{ base.x() + dx, base.y() + dy + (k % 2 ? tol : 2 * tol) });
   }
   std::vector<char> used(pts.size(), 1);
   used[7] = 0; // unused points do not count
   std::size_t expected = 0;
   for(std::size_t a = 0; a < pts.size(); ++a)
     for(std::size_t b = a + 1; b < pts.size(); ++b)
-      if(used[a] && used[b] && std::abs(pts[a].x - pts[b].x) <= tol && std::abs(pts[a].y - pts[b].y) <= tol)
+      if(used[a] && used[b] && std::abs(pts[a].x() - pts[b].x()) <= tol && std::abs(pts[a].y() - pts[b].y()) <= tol)
         ++expected;
   EXPECT_GT(expected, 100u);
   EXPECT_EQ(CGAL::Quad_mesher_2::internal::count_near_duplicate_pairs(pts, used, Point_2d{ -0.01, -0.01 }, tol),

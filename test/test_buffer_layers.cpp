@@ -47,6 +47,7 @@ using Mesh = QM::Quad_mesh_2<Point>;
 using Mesher = QM::Quadtree_mesher_2<K>;
 using QM::Stage;
 using P2d = QM::internal::Point_2d;
+using V2d = QM::internal::Vector_2d;
 
 constexpr double pi = 3.14159265358979323846;
 
@@ -1236,10 +1237,10 @@ std::vector<Point> turned_square(double cx, double cy, double half, double degre
 // core on its left); at a loop vertex the smaller of the angles to its two edges
 double boundary_edge_angle(const Domain& d, const Loops& loops, const P2d& a, const P2d& b)
 {
-  const P2d m{ 0.5 * (a.x + b.x), 0.5 * (a.y + b.y) };
-  const P2d e = QM::internal::minus_2d(b, a);
-  auto angle_to = [&](const P2d& t) {
-    return std::atan2(QM::internal::cross_2d(e, t), QM::internal::dot_2d(e, t)) * 180 / pi;
+  const P2d m = CGAL::midpoint(a, b);
+  const V2d e = b - a;
+  auto angle_to = [&](const V2d& t) {
+    return std::atan2(CGAL::determinant(e, t), CGAL::scalar_product(e, t)) * 180 / pi;
   };
   double best_distance = HUGE_VAL, angle = 0;
   for(const auto& loop : loops.loops) {
@@ -1251,9 +1252,9 @@ double boundary_edge_angle(const Domain& d, const Loops& loops, const P2d& a, co
       const double dist = QM::internal::point_segment_distance(m, p, q);
       if(dist >= best_distance) continue;
       best_distance = dist;
-      angle = angle_to(QM::internal::minus_2d(q, p));
-      const P2d other = t == 0 ? QM::internal::minus_2d(p, xy(k + n - 1))
-                                : QM::internal::minus_2d(xy(k + 2), q);
+      angle = angle_to(q - p);
+      const V2d other = t == 0 ? p - xy(k + n - 1)
+                                : xy(k + 2) - q;
       if(t == 0 || t == 1)
         angle = std::abs(angle) < std::abs(angle_to(other)) ? angle : angle_to(other);
     }
@@ -1404,7 +1405,7 @@ TEST(Buffer_layers, a_jammed_convex_corner_is_split_in_three)
   const P2d corner{ 0.0709781647, -0.0455716451 };
   double nearest = HUGE_VAL, beta = 0;
   for(const auto& [v, angle] : buffer_side_angles_at(templates)) {
-    const double d = QM::internal::length_2d(QM::internal::minus_2d(QM::internal::to_point_2d(templates.points[v]), corner));
+    const double d = QM::internal::length_2d(QM::internal::to_point_2d(templates.points[v]) - corner);
     if(d < nearest) {
       nearest = d;
       beta = angle;
@@ -1466,20 +1467,19 @@ TEST(Buffer_layers, first_layer_meets_lemma_3_away_from_sharp_corners)
       std::array<P2d, 4> P;
       for(int k = 0; k < 4; ++k) P[k] = QM::internal::to_point_2d(first.points[first.quads[q][k]]);
       double lo = 180, hi = 0, side = 0;
-      P2d centre{ 0, 0 };
+      P2d centre = CGAL::ORIGIN;
       for(int k = 0; k < 4; ++k) {
         const P2d &a = P[(k + 3) % 4], &b = P[k], &c = P[(k + 1) % 4];
-        const double ux = a.x - b.x, uy = a.y - b.y, wx = c.x - b.x, wy = c.y - b.y;
+        const double ux = a.x() - b.x(), uy = a.y() - b.y(), wx = c.x() - b.x(), wy = c.y() - b.y();
         const double angle = std::acos(std::clamp((ux * wx + uy * wy) / std::hypot(ux, uy) / std::hypot(wx, wy), -1.0, 1.0)) * 180 / pi;
         lo = (std::min)(lo, angle);
         hi = (std::max)(hi, angle);
         side = (std::max)(side, std::hypot(wx, wy));
-        centre.x += b.x / 4;
-        centre.y += b.y / 4;
+        centre = centre + (b - CGAL::ORIGIN) / 4;
       }
       if(lo >= 45 - 1e-6 && hi <= 135 + 1e-6) continue;
       const bool beside = std::any_of(corners.begin(), corners.end(), [&](const P2d& c) {
-        return std::hypot(c.x - centre.x, c.y - centre.y) < 3 * side;
+        return std::hypot(c.x() - centre.x(), c.y() - centre.y()) < 3 * side;
       });
       (beside ? beside_corners : outside) += 1;
     }
@@ -1931,8 +1931,8 @@ TEST(Buffer_layers_helpers, loop_locator_closest)
   EXPECT_EQ(h.edge, 0u);
   EXPECT_DOUBLE_EQ(h.t, 0.5);
   EXPECT_DOUBLE_EQ(h.dist, 0.3);
-  EXPECT_DOUBLE_EQ(h.point.x, 0.5);
-  EXPECT_DOUBLE_EQ(h.point.y, 0.0);
+  EXPECT_DOUBLE_EQ(h.point.x(), 0.5);
+  EXPECT_DOUBLE_EQ(h.point.y(), 0.0);
   EXPECT_DOUBLE_EQ(locator.param(h), 0.5);
 
   // inside, nearest the top edge (edge 2 runs from (1,1) to (0,1))
@@ -1947,8 +1947,8 @@ TEST(Buffer_layers_helpers, loop_locator_closest)
   h = locator.closest(P2d{2, 2}, 0.1);
   EXPECT_EQ(h.loop, 0u);
   EXPECT_DOUBLE_EQ(h.dist, std::sqrt(2.0));
-  EXPECT_DOUBLE_EQ(h.point.x, 1.0);
-  EXPECT_DOUBLE_EQ(h.point.y, 1.0);
+  EXPECT_DOUBLE_EQ(h.point.x(), 1.0);
+  EXPECT_DOUBLE_EQ(h.point.y(), 1.0);
 
   // nearer the second loop, or restricted to the first
   h = locator.closest(P2d{9, 0.5}, 1);
@@ -1980,9 +1980,9 @@ TEST(Buffer_layers_helpers, right_bisector)
 {
   using QM::internal::right_bisector;
   const double r = std::sqrt(0.5);
-  auto expect = [](P2d v, double x, double y) {
-    EXPECT_NEAR(v.x, x, 1e-15);
-    EXPECT_NEAR(v.y, y, 1e-15);
+  auto expect = [](V2d v, double x, double y) {
+    EXPECT_NEAR(v.x(), x, 1e-15);
+    EXPECT_NEAR(v.y(), y, 1e-15);
   };
   expect(right_bisector(P2d{0, 0}, P2d{1, 0}, P2d{2, 0}), 0, -1);   // straight: the right normal
   expect(right_bisector(P2d{0, 0}, P2d{1, 0}, P2d{1, 1}), r, -r);   // left turn: the reflex side
@@ -1990,9 +1990,9 @@ TEST(Buffer_layers_helpers, right_bisector)
   expect(right_bisector(P2d{0, 0}, P2d{5, 0}, P2d{0, 0}), -1, 0);   // a spike: back along a -> b
   // unit length whatever the edge lengths, and it halves the angle on the right
   const P2d a{-3, 1}, b{0.5, 0.25}, c{2, 7};
-  const P2d d = right_bisector(a, b, c);
-  EXPECT_NEAR(std::hypot(d.x, d.y), 1.0, 1e-15);
-  const P2d tip{b.x + d.x, b.y + d.y};
+  const V2d d = right_bisector(a, b, c);
+  EXPECT_NEAR(std::hypot(d.x(), d.y()), 1.0, 1e-15);
+  const P2d tip = b + d;
   EXPECT_NEAR(QM::internal::right_side_angle(a, b, tip), QM::internal::right_side_angle(a, b, c) / 2, 1e-9);
 }
 

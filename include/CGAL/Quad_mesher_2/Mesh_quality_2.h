@@ -204,14 +204,14 @@ inline std::size_t count_near_duplicate_pairs(const std::vector<Point_2d>& pts, 
   sorted.reserve(pts.size()); // all are used in a mesher's output: no copies on growth
   for(std::size_t v = 0; v < pts.size(); ++v)
     if(used[v])
-      sorted.push_back(Entry{ tol > 0 ? std::int64_t(std::floor((pts[v].x - lo.x) / tol)) : 0, pts[v].x, pts[v].y });
+      sorted.push_back(Entry{ tol > 0 ? std::int64_t(std::floor((pts[v].x() - lo.x()) / tol)) : 0, pts[v].x(), pts[v].y() });
   std::sort(sorted.begin(), sorted.end());
   if(exact != nullptr)
     for(std::size_t i = 1; i < sorted.size(); ++i)
       *exact += sorted[i].x == sorted[i - 1].x && sorted[i].y == sorted[i - 1].y ? 1 : 0;
   auto near = [&](const Entry& a, const Entry& b) {
     const bool is_near = std::abs(a.x - b.x) <= tol && std::abs(a.y - b.y) <= tol;
-    if(is_near && where != nullptr) where->push_back(Point_2d{ a.x, a.y });
+    if(is_near && where != nullptr) where->push_back(Point_2d(a.x, a.y));
     return is_near;
   };
   std::size_t count = 0;
@@ -261,8 +261,8 @@ std::size_t count_hanging_nodes(const std::vector<Point_2d>& pts,
   for(std::size_t e : edges) {
     const Point_2d& a = pts[src(e)];
     const Point_2d& b = pts[tgt(e)];
-    edge_boxes.emplace_back((std::min)(a.x, b.x) - tol, (std::min)(a.y, b.y) - tol,
-                            (std::max)(a.x, b.x) + tol, (std::max)(a.y, b.y) + tol);
+    edge_boxes.emplace_back((std::min)(a.x(), b.x()) - tol, (std::min)(a.y(), b.y()) - tol,
+                            (std::max)(a.x(), b.x()) + tol, (std::max)(a.y(), b.y()) + tol);
   }
   const Box_tree tree(edge_boxes);
   std::vector<char> hanging(pts.size(), 0);
@@ -274,18 +274,18 @@ std::size_t count_hanging_nodes(const std::vector<Point_2d>& pts,
     if(q[0] == v || q[1] == v || q[2] == v || q[3] == v)
       return;
     const Point_2d& a = pts[src(e)];
-    const Point_2d d = minus_2d(pts[tgt(e)], a);
-    const Point_2d ap = minus_2d(pts[v], a);
-    const double len2 = dot_2d(d, d);
-    const double cr = cross_2d(d, ap);
+    const Vector_2d d = pts[tgt(e)] - a;
+    const Vector_2d ap = pts[v] - a;
+    const double len2 = CGAL::scalar_product(d, d);
+    const double cr = CGAL::determinant(d, ap);
     if(cr * cr > tol * tol * len2) // farther than tol from the line: the common case
       return;
     const double len = std::sqrt(len2);
-    const double along = dot_2d(ap, d) / len;
+    const double along = CGAL::scalar_product(ap, d) / len;
     if(len > 2 * tol && along > tol && along < len - tol)
       hanging[v] = 1;
   };
-  auto point_box = [&](std::size_t v) { return Bbox_2(pts[v].x, pts[v].y, pts[v].x, pts[v].y); };
+  auto point_box = [&](std::size_t v) { return Bbox_2(pts[v].x(), pts[v].y(), pts[v].x(), pts[v].y()); };
   constexpr std::size_t block = 64;
   std::vector<std::size_t> candidates;
   for(std::size_t v0 = 0; v0 < pts.size(); v0 += block) {
@@ -325,9 +325,9 @@ public:
   /// the interior angle (degrees) at `p` between the edges to `next` and to `prev`
   double operator()(const Point_2d& prev, const Point_2d& p, const Point_2d& next)
   {
-    const Point_2d e_next = minus_2d(next, p);
-    const Point_2d e_prev = minus_2d(prev, p);
-    const double cross = cross_2d(e_next, e_prev), dot = dot_2d(e_next, e_prev);
+    const Vector_2d e_next = next - p;
+    const Vector_2d e_prev = prev - p;
+    const double cross = CGAL::determinant(e_next, e_prev), dot = CGAL::scalar_product(e_next, e_prev);
     std::uint64_t c, d;
     std::memcpy(&c, &cross, sizeof c);
     std::memcpy(&d, &dot, sizeof d);
@@ -478,7 +478,7 @@ private:
 inline std::pair<Point_2d, Point_2d> count_unused_vertices(const std::vector<Point_2d>& pts,
                                                            const std::vector<char>& used, Mesh_quality_2& r)
 {
-  Point_2d lo{ 0, 0 }, hi{ 0, 0 };
+  Point_2d lo = ORIGIN, hi = ORIGIN;
   bool first = true;
   for(std::size_t v = 0; v < pts.size(); ++v) {
     if(!used[v]) {
@@ -490,10 +490,8 @@ inline std::pair<Point_2d, Point_2d> count_unused_vertices(const std::vector<Poi
       lo = hi = p;
       first = false;
     } else {
-      lo.x = (std::min)(lo.x, p.x);
-      lo.y = (std::min)(lo.y, p.y);
-      hi.x = (std::max)(hi.x, p.x);
-      hi.y = (std::max)(hi.y, p.y);
+      lo = Point_2d((std::min)(lo.x(), p.x()), (std::min)(lo.y(), p.y()));
+      hi = Point_2d((std::max)(hi.x(), p.x()), (std::max)(hi.y(), p.y()));
     }
   }
   return { lo, hi };
@@ -508,17 +506,17 @@ inline void count_duplicate_vertices(const std::vector<Point_2d>& pts, const std
 {
   std::size_t used_duplicates = 0;
   r.number_of_near_duplicate_vertices =
-    count_near_duplicate_pairs(pts, used, lo, 1e-9 * length_2d(minus_2d(hi, lo)), &used_duplicates, where);
+    count_near_duplicate_pairs(pts, used, lo, 1e-9 * length_2d(hi - lo), &used_duplicates, where);
   if(r.number_of_unused_vertices == 0) {
     r.number_of_duplicate_vertices = used_duplicates;
     return;
   }
   std::vector<Point_2d> sorted(pts);
   std::sort(sorted.begin(), sorted.end(), [](const Point_2d& a, const Point_2d& b) {
-    return a.x < b.x || (a.x == b.x && a.y < b.y);
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
   });
   for(std::size_t i = 1; i < pts.size(); ++i)
-    if(sorted[i].x == sorted[i - 1].x && sorted[i].y == sorted[i - 1].y)
+    if(sorted[i].x() == sorted[i - 1].x() && sorted[i].y() == sorted[i - 1].y())
       ++r.number_of_duplicate_vertices;
 }
 
@@ -572,13 +570,13 @@ inline std::size_t count_boundary_loops(const Quality_edge_table& table, const s
   // the outside lies on the right of both.
   auto turn = [&](std::size_t h) -> std::size_t {
     const std::size_t v = table.target(h);
-    const Point_2d back = minus_2d(pts[table.source(h)], pts[v]);
+    const Vector_2d back = pts[table.source(h)] - pts[v];
     std::size_t best = npos;
     double best_angle = 0;
     for(std::size_t i = out_offsets[v]; i < out_offsets[v + 1]; ++i) {
       const std::size_t o = out[i];
-      const Point_2d d = minus_2d(pts[table.target(o)], pts[v]);
-      double a = std::atan2(cross_2d(back, d), dot_2d(back, d));
+      const Vector_2d d = pts[table.target(o)] - pts[v];
+      double a = std::atan2(CGAL::determinant(back, d), CGAL::scalar_product(back, d));
       if(a <= 0)
         a += 2 * 3.14159265358979323846;
       if(best == npos || a < best_angle) {
@@ -647,7 +645,7 @@ Mesh_quality_2 internal::compute_quality(const Quad_mesh_2<Point_2>& mesh, std::
   r.number_of_boundary_loops = count_boundary_loops(table, boundary, pts, mesh.quads.size());
 
   // Hanging nodes: used vertices in the interior of a used-once edge of another quad.
-  const double diag = length_2d(minus_2d(hi, lo));
+  const double diag = length_2d(hi - lo);
   r.number_of_hanging_nodes = count_hanging_nodes(pts, used, mesh.quads, boundary, 1e-9 * diag, where);
   return r;
 }

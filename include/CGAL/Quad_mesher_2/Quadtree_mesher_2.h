@@ -436,7 +436,7 @@ private:
     else
       msg << ": the mesh has a hanging node, a non-manifold edge or two vertices closer than 1e-9 of its diagonal";
     if(!requests.empty())
-      msg << ", near (" << requests.front().first.x << ", " << requests.front().first.y << ")";
+      msg << ", near (" << requests.front().first.x() << ", " << requests.front().first.y() << ")";
     msg << ", after " << m_rounds.round() << " refinement rounds";
     if(refused)
       msg << "; finer cells are refused there: " << m_tree->depth_limit();
@@ -448,8 +448,8 @@ private:
   std::string lost_point_error(const std::vector<internal::Refinement_request>& requests) const
   {
     std::ostringstream msg;
-    msg << "isolated point " << input_point_name(m_point_names[m_lost_points.front()]) << " (" << requests.front().first.x
-        << ", " << requests.front().first.y << ") lies " << 2 * requests.front().second
+    msg << "isolated point " << input_point_name(m_point_names[m_lost_points.front()]) << " (" << requests.front().first.x()
+        << ", " << requests.front().first.y() << ") lies " << 2 * requests.front().second
         << " from the boundary: cells small enough to keep it a vertex inside the core are beyond the "
         << "quadtree's depth or its refinement rounds (" << m_rounds.round() << ")";
     return msg.str();

@@ -100,14 +100,14 @@ bool write_SVG(std::ostream& os, const Quad_mesh_2<Point_2>& mesh,
     double xmin = 0, ymin = 0, xmax = 0, ymax = 0;
     auto add = [&](const Q_internal_point& p) {
       if(empty) {
-        xmin = xmax = p.x;
-        ymin = ymax = p.y;
+        xmin = xmax = p.x();
+        ymin = ymax = p.y();
         empty = false;
       } else {
-        xmin = (std::min)(xmin, p.x);
-        xmax = (std::max)(xmax, p.x);
-        ymin = (std::min)(ymin, p.y);
-        ymax = (std::max)(ymax, p.y);
+        xmin = (std::min)(xmin, p.x());
+        xmax = (std::max)(xmax, p.x());
+        ymin = (std::min)(ymin, p.y());
+        ymax = (std::max)(ymax, p.y());
       }
     };
     for(const auto& q : mesh.quads)
@@ -119,8 +119,8 @@ bool write_SVG(std::ostream& os, const Quad_mesh_2<Point_2>& mesh,
     }
     const double extent = (std::max)(xmax - xmin, ymax - ymin);
     const double scale = extent > 0 ? 1000.0 / extent : 1.0;
-    auto X = [&](const Q_internal_point& p) { return (p.x - xmin) * scale; };
-    auto Y = [&](const Q_internal_point& p) { return (ymax - p.y) * scale; };
+    auto X = [&](const Q_internal_point& p) { return (p.x() - xmin) * scale; };
+    auto Y = [&](const Q_internal_point& p) { return (ymax - p.y()) * scale; };
     const double width = (xmax - xmin) * scale, height = (ymax - ymin) * scale;
 
     // Stroke width: a twentieth of the mean edge length.
@@ -129,7 +129,7 @@ bool write_SVG(std::ostream& os, const Quad_mesh_2<Point_2>& mesh,
     for(const auto& q : mesh.quads)
       for(int k = 0; k < 4; ++k) {
         sum_len += Quad_mesher_2::internal::length_2d(
-          Quad_mesher_2::internal::minus_2d(pts[q[(k + 1) % 4]], pts[q[k]]));
+          (pts[q[(k + 1) % 4]] - pts[q[k]]));
         ++n_len;
       }
     double stroke = n_len > 0 ? 0.05 * sum_len * scale / double(n_len) : 1.0;

@@ -12,12 +12,28 @@
 #define CGAL_QUAD_MESHER_2_INTERNAL_APPROXIMATE_KERNEL_H
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/number_utils.h>
+
+#include <cmath>
 
 namespace CGAL {
 namespace Quad_mesher_2 {
 namespace internal {
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Approximate_kernel;
+typedef Approximate_kernel::Point_2 Point_2d;
+typedef Approximate_kernel::Vector_2 Vector_2d;
+
+/// The nearest double point to `p`, a point of the user's traits. The traits concept asks for
+/// coordinates with `to_double()`, not for a kernel, so this is not a `Cartesian_converter`.
+template <class Point_2>
+inline Point_2d to_point_2d(const Point_2& p)
+{
+  return Point_2d(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
+}
+
+/// The length of `v`.
+inline double length_2d(const Vector_2d& v) { return std::sqrt(v.squared_length()); }
 
 } // namespace internal
 } // namespace Quad_mesher_2

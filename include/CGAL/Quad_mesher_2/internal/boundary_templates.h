@@ -130,10 +130,10 @@ private:
     for(std::size_t q : quads_at[v]) {
       const Quad& Q = m_zone.mesh.quads[q];
       for(int k = 0; k < 4; ++k) {
-        const Point_2d e = minus_2d(m_zone.xy[Q[(k + 1) % 4]], m_zone.xy[Q[k]]);
-        const Point_2d f = minus_2d(m_zone.xy[Q[(k + 2) % 4]], m_zone.xy[Q[(k + 1) % 4]]);
+        const Vector_2d e = m_zone.xy[Q[(k + 1) % 4]] - m_zone.xy[Q[k]];
+        const Vector_2d f = (m_zone.xy[Q[(k + 2) % 4]] - (m_zone.xy[Q[(k + 1) % 4]]));
         if(side < 0) side = length_2d(e);
-        if(std::abs(length_2d(e) - side) > 1e-6 * side || std::abs(dot_2d(e, f)) > 1e-6 * side * side)
+        if(std::abs(length_2d(e) - side) > 1e-6 * side || std::abs(CGAL::scalar_product(e, f)) > 1e-6 * side * side)
           return false;
       }
     }
@@ -162,12 +162,12 @@ private:
     static const std::vector<double> notch_steps{ 0.70710678118654752, 0.5, 0.35 };
     static const std::vector<double> corner_steps{ -0.41421356237309505, -0.3, -0.2 };
     static const std::vector<double> neighbour_steps{ 0.5, 0.35, 0.2, -0.3, -0.2 };
-    const double e = 0.5 * (length_2d(minus_2d(old, m_zone.xy[a])) + length_2d(minus_2d(m_zone.xy[c], old)));
-    const Point_2d d = right_bisector(m_zone.xy[a], old, m_zone.xy[c]);
+    const double e = 0.5 * (length_2d(old - m_zone.xy[a]) + length_2d(m_zone.xy[c] - old));
+    const Vector_2d d = right_bisector(m_zone.xy[a], old, m_zone.xy[c]);
     const double clear = 0.25 * m_zone.local_size[b];
     double best_f = 0;
     for(double f : notch ? notch_steps : corner ? corner_steps : neighbour_steps) {
-      const Point_2d p{old.x + f * e * d.x, old.y + f * e * d.y};
+      const Point_2d p = old + (f * e) * d;
       m_zone.xy[b] = p;
       bool ok = worst(p) < best - angle_tolerance;
       for(auto q = quads_at[b].begin(); ok && q != quads_at[b].end(); ++q) {
@@ -185,8 +185,8 @@ private:
       m_zone.xy[b] = old;
       return false;
     }
-    m_zone.xy[b] = Point_2d{old.x + best_f * e * d.x, old.y + best_f * e * d.y};
-    m_zone.mesh.points[b] = m_zone.traits.construct_point_2_object()(FT(m_zone.xy[b].x), FT(m_zone.xy[b].y));
+    m_zone.xy[b] = old + (best_f * e) * d;
+    m_zone.mesh.points[b] = m_zone.mesh_point(m_zone.xy[b]);
     ++(best_f > 0 ? m_zone.report.moved_notches : m_zone.report.cut_corners);
     return true;
   }

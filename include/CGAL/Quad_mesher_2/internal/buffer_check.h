@@ -90,10 +90,10 @@ private:
                          std::vector<std::pair<Point_2d, double>>& requests) const
   {
     if(!(size > 0) || !std::isfinite(size)) return;
-    double x0 = P[0].x, x1 = P[0].x, y0 = P[0].y, y1 = P[0].y;
+    double x0 = P[0].x(), x1 = P[0].x(), y0 = P[0].y(), y1 = P[0].y();
     for(const Point_2d& p : P) {
-      x0 = (std::min)(x0, p.x); x1 = (std::max)(x1, p.x);
-      y0 = (std::min)(y0, p.y); y1 = (std::max)(y1, p.y);
+      x0 = (std::min)(x0, p.x()); x1 = (std::max)(x1, p.x());
+      y0 = (std::min)(y0, p.y()); y1 = (std::max)(y1, p.y());
     }
     // a cell's few times: the corners' requests suffice; and at most 64 requests a quad
     const double span = (std::max)(x1 - x0, y1 - y0);
@@ -101,7 +101,7 @@ private:
     const double step = (std::max)(size, span / 8);
     for(double x = x0 + step / 2; x < x1; x += step)
       for(double y = y0 + step / 2; y < y1; y += step)
-        requests.emplace_back(Point_2d{ x, y }, size);
+        requests.emplace_back(Point_2d(x, y), size);
   }
 
   Buffer_zone<K>& m_zone;

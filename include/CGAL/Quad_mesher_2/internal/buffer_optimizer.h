@@ -120,8 +120,8 @@ private:
       // an edge collapsing to a point keeps the angles fine but merges two vertices: the
       // whole-mesh check rejects vertices within 1e-9 of the diagonal
       for(int side : { 1, 3 }) {
-        const Point_2d d = minus_2d(m_zone.xy[Q[(c + side) % 4]], m_zone.xy[v]);
-        if(dot_2d(d, d) <= m_min_edge2) ++r.invalid;
+        const Vector_2d d = m_zone.xy[Q[(c + side) % 4]] - m_zone.xy[v];
+        if(CGAL::scalar_product(d, d) <= m_min_edge2) ++r.invalid;
       }
       if(bound != nullptr && !(r < *bound)) return r;
     }
@@ -175,15 +175,12 @@ private:
     std::vector<Point_2d>& targets = m_targets;
     targets.push_back(m_zone.parallelogram_targets(v, m_quads_at, targets));
     add_turns_about_corners(v, m_quads_at, targets);
-    Point_2d mean{0, 0};
-    for(std::size_t k = 0; k + 1 < targets.size(); ++k) { mean.x += targets[k].x; mean.y += targets[k].y; }
-    mean.x /= double(targets.size() - 1); mean.y /= double(targets.size() - 1);
-    targets.push_back(mean);
+    targets.push_back(mean_2d(targets.begin(), targets.end() - 1));
     Local best = current;
     Point_2d best_p = old;
     for(const Point_2d& t : targets)
       for(double step : { 1.0, 0.5, 0.25, 0.1 }) {
-        Point_2d p{old.x + step * (t.x - old.x), old.y + step * (t.y - old.y)};
+        Point_2d p = along_2d(old, t, step);
         if(!slide_to(v, p)) continue;
         m_zone.xy[v] = p;
         const Local c = local_cost(v, &best);
@@ -193,7 +190,7 @@ private:
           best_p = p;
         }
       }
-    if(best_p.x == old.x && best_p.y == old.y) return false;
+    if(best_p == old) return false;
     m_zone.xy[v] = best_p;
     return true;
   }
@@ -239,7 +236,7 @@ private:
     std::vector<Point_2d> moved_from;
     std::vector<Point_2> exact_before; // for undoing: the core's points are not all doubles
     for(std::size_t k = 0; k < repair.size(); ++k)
-      if(m_zone.xy[repair[k]].x != before[k].x || m_zone.xy[repair[k]].y != before[k].y) {
+      if(m_zone.xy[repair[k]] != before[k]) {
         moved.push_back(repair[k]);
         moved_from.push_back(before[k]);
         exact_before.push_back(m_zone.mesh.points[repair[k]]);
@@ -285,8 +282,8 @@ private:
         if(other < 0 || here <= 135.0) continue;
         // turn v towards w by half the difference
         const double turn = (here - other) / 2 * pi / 180;
-        const Point_2d d = minus_2d(old, P), e = minus_2d(w, P);
-        const double sense = cross_2d(d, e) > 0 ? 1.0 : -1.0;
+        const Vector_2d d = (old - P), e = w - P;
+        const double sense = CGAL::determinant(d, e) > 0 ? 1.0 : -1.0;
         targets.push_back(turned_about_2d(old, P, sense * turn));
       }
     }
@@ -298,14 +295,14 @@ private:
     for(std::size_t v : movable) {
       auto it = m_zone.slides.find(v);
       if(it == m_zone.slides.end()) {
-        m_zone.mesh.points[v] = m_zone.traits.construct_point_2_object()(FT(m_zone.xy[v].x), FT(m_zone.xy[v].y));
+        m_zone.mesh.points[v] = m_zone.mesh_point(m_zone.xy[v]);
       } else {
         const auto& lv = m_zone.loops.loops[it->second.loop].vertices;
         const Point_2& a = m_zone.domain.points[lv[it->second.edge]];
         const Point_2& b = m_zone.domain.points[lv[(it->second.edge + 1) % lv.size()]];
         const Point_2d A = to_point_2d(a), B = to_point_2d(b);
-        const Point_2d ab = minus_2d(B, A);
-        const double t = dot_2d(minus_2d(m_zone.xy[v], A), ab) / dot_2d(ab, ab);
+        const Vector_2d ab = B - A;
+        const double t = CGAL::scalar_product(m_zone.xy[v] - A, ab) / CGAL::scalar_product(ab, ab);
         m_zone.mesh.points[v] = m_zone.point_between(a, b, t);
         m_zone.xy[v] = to_point_2d(m_zone.mesh.points[v]);
       }
@@ -321,17 +318,17 @@ private:
     const std::size_t a = it->second.neighbors[0], b = it->second.neighbors[1];
     if(a == none || b == none) return false;
     const Point_2d A = m_zone.xy[a], B = m_zone.xy[b];
-    const Point_2d ab = minus_2d(B, A);
-    const double len2 = dot_2d(ab, ab);
+    const Vector_2d ab = B - A;
+    const double len2 = CGAL::scalar_product(ab, ab);
     if(!(len2 > 0)) return false;
-    const double t = (std::min)(0.9, (std::max)(0.1, dot_2d(minus_2d(p, A), ab) / len2));
+    const double t = (std::min)(0.9, (std::max)(0.1, CGAL::scalar_product(p - A, ab) / len2));
     // the neighbours must lie on this point's edge (or be its ends) for the chain to stay on it
     const auto& lv = m_zone.loops.loops[it->second.loop].vertices;
     const Point_2d E0 = to_point_2d(m_zone.domain.points[lv[it->second.edge]]);
     const Point_2d E1 = to_point_2d(m_zone.domain.points[lv[(it->second.edge + 1) % lv.size()]]);
-    const Point_2d e = minus_2d(E1, E0);
+    const Vector_2d e = E1 - E0;
     const double el = length_2d(e);
-    if(std::abs(cross_2d(e, minus_2d(A, E0))) > 1e-9 * el * el || std::abs(cross_2d(e, minus_2d(B, E0))) > 1e-9 * el * el)
+    if(std::abs(CGAL::determinant(e, A - E0)) > 1e-9 * el * el || std::abs(CGAL::determinant(e, B - E0)) > 1e-9 * el * el)
       return false;
     p = along_2d(A, B, t);
     return true;

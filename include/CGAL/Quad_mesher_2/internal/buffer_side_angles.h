@@ -73,8 +73,8 @@ inline double worst_buffer_angle_excess(const Point_2d& a2, const Point_2d& a, c
 inline double rounding_tolerance(const Point_2d& a, const Point_2d& b, const Point_2d& c)
 {
   double scale = 0;
-  for(const Point_2d* p : { &a, &b, &c }) scale = (std::max)({ scale, std::abs(p->x), std::abs(p->y) });
-  const double edge = (std::min)(length_2d(minus_2d(a, b)), length_2d(minus_2d(c, b)));
+  for(const Point_2d* p : { &a, &b, &c }) scale = (std::max)({ scale, std::abs(p->x()), std::abs(p->y()) });
+  const double edge = (std::min)(length_2d(a - b), length_2d(c - b));
   return (std::max)(Buffer_tolerances::angle_tolerance,
                     64 * std::numeric_limits<double>::epsilon() * scale / edge * 180 / Buffer_tolerances::pi);
 }

@@ -127,7 +127,7 @@ public:
           const double size = std::isfinite(h.dist) ? 0.25 * h.dist : 0.0;
           requests.for_validity.emplace_back(p, 2 * size);
           if(size > 0)
-            requests.for_validity.emplace_back(Point_2d{ 0.5 * (p.x + h.point.x), 0.5 * (p.y + h.point.y) }, 2 * size);
+            requests.for_validity.emplace_back(CGAL::midpoint(p, h.point), 2 * size);
         }
       }
     return ok;
@@ -162,7 +162,7 @@ public:
     const Point_2d& o = xy[cyc[0]]; // relative to a vertex: far from the origin, absolute
                                        // coordinates would cancel
     for(std::size_t i = 0; i < cyc.size(); ++i)
-      a += cross_2d(minus_2d(xy[cyc[i]], o), minus_2d(xy[cyc[(i + 1) % cyc.size()]], o));
+      a += CGAL::determinant(xy[cyc[i]] - o, (xy[cyc[(i + 1) % cyc.size()]] - o));
     return a / 2;
   }
 
@@ -172,9 +172,15 @@ public:
       requests.for_validity.emplace_back(xy[v], local_size[v]);
   }
 
+  // the traits' point at working position p: exactly p, whatever the kernel
+  Point_2 mesh_point(const Point_2d& p) const
+  {
+    return traits.construct_point_2_object()(FT(p.x()), FT(p.y()));
+  }
+
   std::size_t add_point(const Point_2d& p)
   {
-    mesh.points.push_back(traits.construct_point_2_object()(FT(p.x), FT(p.y)));
+    mesh.points.push_back(mesh_point(p));
     xy.push_back(p);
     return mesh.points.size() - 1;
   }
@@ -222,7 +228,7 @@ public:
     if(!(h.dist < 2 * local_size[b])) return false;
     const std::size_t nv = locator->loop(h.loop).size();
     for(std::size_t k : { h.edge, (h.edge + 1) % nv })
-      if(is_feature(h.loop, k) && length_2d(minus_2d(locator->loop(h.loop)[k], xy[b])) < 2 * local_size[b])
+      if(is_feature(h.loop, k) && length_2d(locator->loop(h.loop)[k] - xy[b]) < 2 * local_size[b])
         return true;
     return false;
   }
@@ -233,15 +239,14 @@ public:
   // doubles, find the candidates: the query box is widened past their rounding.
   bool clear_of_boundary(const Point_2d& a, const Point_2d& b, double clear) const
   {
-    const auto point = traits.construct_point_2_object();
-    const typename K::Segment_2 ab = traits.construct_segment_2_object()(point(FT(a.x), FT(a.y)), point(FT(b.x), FT(b.y)));
+    const typename K::Segment_2 ab = traits.construct_segment_2_object()(mesh_point(a), mesh_point(b));
     const FT clear2 = FT(clear) * FT(clear);
     const auto compare = traits.compare_squared_distance_2_object();
     const auto segment = traits.construct_segment_2_object();
     // the boxes within `clear` of the segment's, widened past the rounding of its corners
     const double r = clear * (1 + 1e-6)
-                     + 4 * std::numeric_limits<double>::epsilon() * (std::max)({ std::abs(a.x), std::abs(a.y), std::abs(b.x), std::abs(b.y) });
-    const Bbox_2 box((std::min)(a.x, b.x) - r, (std::min)(a.y, b.y) - r, (std::max)(a.x, b.x) + r, (std::max)(a.y, b.y) + r);
+                     + 4 * std::numeric_limits<double>::epsilon() * (std::max)({ std::abs(a.x()), std::abs(a.y()), std::abs(b.x()), std::abs(b.y()) });
+    const Bbox_2 box((std::min)(a.x(), b.x()) - r, (std::min)(a.y(), b.y()) - r, (std::max)(a.x(), b.x()) + r, (std::max)(a.y(), b.y()) + r);
     bool clear_of = true;
     locator->edges_meeting(box, [&](std::size_t l, std::size_t k) {
       const auto& lv = loops.loops[l].vertices;
@@ -372,19 +377,18 @@ public:
   Point_2d parallelogram_targets(std::size_t v, const Vertex_quads& quads_at, std::vector<Point_2d>& targets) const
   {
     targets.clear();
-    Point_2d lap{0, 0};
+    Vector_2d lap = NULL_VECTOR;
     for(std::size_t q : quads_at[v]) {
       const Quad& Q = mesh.quads[q];
       const int c = corner_of(Q, v);
       const Point_2d& prev = xy[Q[(c + 3) % 4]];
       const Point_2d& next = xy[Q[(c + 1) % 4]];
       const Point_2d& opp = xy[Q[(c + 2) % 4]];
-      targets.push_back(Point_2d{prev.x + next.x - opp.x, prev.y + next.y - opp.y});
-      lap.x += prev.x + next.x; lap.y += prev.y + next.y;
+      targets.push_back(Point_2d(prev.x() + next.x() - opp.x(), prev.y() + next.y() - opp.y()));
+      lap = lap + ((prev - ORIGIN) + (next - ORIGIN));
     }
     const int corners = 2 * int(quads_at[v].size());
-    lap.x /= corners; lap.y /= corners;
-    return lap;
+    return ORIGIN + lap / corners;
   }
 
   Mesh& mesh;

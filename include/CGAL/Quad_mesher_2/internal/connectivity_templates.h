@@ -111,17 +111,16 @@ public:
     const int k = corner_of(Q, b);
     if(Q[(k + 1) % 4] != c1 || Q[(k + 3) % 4] != a) return false;
     const std::size_t x = Q[(k + 2) % 4];
-    auto mid = [&](const Point_2d& u, const Point_2d& v) { return Point_2d{ (u.x + v.x) / 2, (u.y + v.y) / 2 }; };
-    const Point_2d pa = mid(m_zone.xy[a], m_zone.xy[b]), pc = mid(m_zone.xy[b], m_zone.xy[c1]);
+    const Point_2d pa = CGAL::midpoint(m_zone.xy[a], m_zone.xy[b]), pc = CGAL::midpoint(m_zone.xy[b], m_zone.xy[c1]);
     // O from the centre where the three quads' worst angle is least: a quad far from a
     // square (a tongue's tip) left one under 45 degrees
     auto worst = [&](const Point_2d& o) {
       return (std::max)({ quad_badness({ m_zone.xy[b], pc, o, pa }), quad_badness({ pc, m_zone.xy[c1], m_zone.xy[x], o }),
                           quad_badness({ pa, o, m_zone.xy[x], m_zone.xy[a] }) });
     };
-    Point_2d centre = mid(mid(m_zone.xy[a], m_zone.xy[c1]), mid(m_zone.xy[b], m_zone.xy[x]));
+    Point_2d centre = CGAL::midpoint(CGAL::midpoint(m_zone.xy[a], m_zone.xy[c1]), CGAL::midpoint(m_zone.xy[b], m_zone.xy[x]));
     double least = worst(centre);
-    pattern_search(centre, length_2d(minus_2d(m_zone.xy[x], m_zone.xy[b])), [&](const Point_2d& o) {
+    pattern_search(centre, length_2d(m_zone.xy[x] - m_zone.xy[b]), [&](const Point_2d& o) {
       const double w = worst(o);
       if(!(w < least)) return false;
       least = w;
@@ -151,7 +150,7 @@ private:
     Notch(const Buffer_zone<K>& zone, std::size_t a2_, std::size_t a_, std::size_t b_, std::size_t c1_, std::size_t c2_)
       : z(zone), a2(a2_), a(a_), b(b_), c1(c1_), c2(c2_),
         d(right_bisector(z.xy[a], z.xy[b], z.xy[c1])),
-        s(0.5 * (length_2d(minus_2d(z.xy[a], z.xy[b])) + length_2d(minus_2d(z.xy[c1], z.xy[b])))),
+        s(0.5 * (length_2d(z.xy[a] - z.xy[b]) + length_2d(z.xy[c1] - z.xy[b]))),
         clear(0.25 * z.local_size[b])
     {}
 
@@ -179,7 +178,7 @@ private:
     }
 
     // f s from b along the unit vector u
-    Point_2d along(double f, const Point_2d& u) const { return Point_2d{ z.xy[b].x + f * s * u.x, z.xy[b].y + f * s * u.y }; }
+    Point_2d along(double f, const Vector_2d& u) const { return z.xy[b] + (f * s) * u; }
     // f s from b, turned by k 15 degrees from the bisector
     Point_2d off_bisector(double f, int k) const { return along(f, turned_2d(d, k * pi / 12)); }
 
@@ -210,11 +209,11 @@ private:
 
     const Buffer_zone<K>& z;
     const std::size_t a2, a, b, c1, c2;
-    const Point_2d d; // the unit bisector of beta, into the buffer
+    const Vector_2d d; // the unit bisector of beta, into the buffer
     const double s;   // the mean length of the notch's two edges
     const double clear;
     double best = excess(z.xy[b]);
-    Point_2d best_y{ 0, 0 };
+    Point_2d best_y = ORIGIN;
     bool found = false;
   };
 

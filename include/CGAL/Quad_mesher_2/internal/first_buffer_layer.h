@@ -63,7 +63,7 @@ public:
   {
     for(int k = 0; k < 8; ++k) {
       const double a = k * pi / 4;
-      direction[k] = Point_2d{ std::cos(a), std::sin(a) };
+      direction[k] = Vector_2d(std::cos(a), std::sin(a));
     }
   }
 
@@ -88,11 +88,11 @@ private:
     const std::size_t nv = loop_xy.size();
     const Loop_locator::Hit hit = m_zone.locator->closest(F[i], 2 * m_zone.local_size[cyc[i]], l);
     G[i] = hit.point;
-    reach[i] = 0.5 * length_2d(minus_2d(F[i], m_zone.xy[cyc[i]]));
+    reach[i] = 0.5 * length_2d(F[i] - m_zone.xy[cyc[i]]);
     const double near = 2 * m_zone.local_size[cyc[i]];
     for(std::size_t step : { nv - 1, std::size_t(1) }) // backwards from the edge's start, forwards from its end
       for(std::size_t k = step == 1 ? (hit.edge + 1) % nv : hit.edge, walked = 0;
-          reach[i] > 0 && walked < nv && length_2d(minus_2d(loop_xy[k], hit.point)) <= near;
+          reach[i] > 0 && walked < nv && length_2d(loop_xy[k] - hit.point) <= near;
           k = (k + step) % nv, ++walked)
         if(m_zone.is_feature(l, k)) reach[i] = 0;
   }
@@ -125,22 +125,21 @@ private:
     if(best.invalid == 0 && best.out == 0 && best.worst <= 20.0) return false;
     const double h = m_zone.local_size[cyc[i]];
     Point_2d best_f = F[i], best_g = G[i];
-    const Point_2d mid{ 0.5 * (F[(i + n - 1) % n].x + F[(i + 1) % n].x),
-                        0.5 * (F[(i + n - 1) % n].y + F[(i + 1) % n].y) };
+    const Point_2d mid = CGAL::midpoint(F[(i + n - 1) % n], F[(i + 1) % n]);
     tries.clear();
     for(double s : { 1.0, 0.5, 0.25 })
-      tries.push_back(Point_2d{ F[i].x + s * (mid.x - F[i].x), F[i].y + s * (mid.y - F[i].y) });
+      tries.push_back(along_2d(F[i], mid, s));
     for(double s : { 0.2, 0.1, 0.05 })
-      for(const Point_2d& d : direction)
-        tries.push_back(Point_2d{ F[i].x + s * h * d.x, F[i].y + s * h * d.y });
+      for(const Vector_2d& d : direction)
+        tries.push_back(F[i] + (s * h) * d);
     for(const Point_2d& f : tries) {
-      if(length_2d(minus_2d(f, start[i])) > reach[i]) continue;
-      Point_2d g{ 0, 0 };
+      if(length_2d(f - start[i]) > reach[i]) continue;
+      Point_2d g = ORIGIN;
       auto boundary_point = [&](const Point_2d& at) { return g = m_zone.locator->closest(at, 2 * h, l).point; };
       const Local r = local(i, f, boundary_point, &best);
       if(r < best) { best = r; best_f = f; best_g = g; }
     }
-    if(best_f.x == F[i].x && best_f.y == F[i].y) return false;
+    if(best_f == F[i]) return false;
     F[i] = best_f;
     G[i] = best_g;
     return true;
@@ -153,7 +152,7 @@ private:
   const std::vector<Point_2d> start; // F as first placed
   std::vector<double> reach;
   std::vector<Point_2d> G;
-  std::array<Point_2d, 8> direction; // the eight directions the tries step in
+  std::array<Vector_2d, 8> direction; // the eight directions the tries step in
   std::vector<Point_2d> tries;       // try_move()'s, kept for their memory
 };
 
@@ -209,19 +208,19 @@ private:
     const Point_2d& b = m_zone.xy[cyc[i]];
     const Point_2d& nb = m_zone.xy[cyc[(i + 1) % n]];
     const Loop_locator::Hit h = m_zone.locator->closest(b, 2 * m_zone.local_size[cyc[i]], l);
-    const Point_2d toward = normalized_2d(minus_2d(h.point, b));
-    const Point_2d bis = right_bisector(a, b, nb);
-    Point_2d d = normalized_2d(Point_2d{ 0.5 * (bis.x + toward.x), 0.5 * (bis.y + toward.y) });
+    const Vector_2d toward = normalized_2d(h.point - b);
+    const Vector_2d bis = right_bisector(a, b, nb);
+    Vector_2d d = normalized_2d(0.5 * (bis + toward));
     const double beta = right_side_angle(a, b, nb) * pi / 180;
     const double limit = 0.8 * (std::min)(beta / 2 - pi / 4, 3 * pi / 4 - beta / 2);
-    const double dev = std::atan2(cross_2d(bis, d), dot_2d(bis, d));
+    const double dev = std::atan2(CGAL::determinant(bis, d), CGAL::scalar_product(bis, d));
     if(limit > 0 && std::abs(dev) > limit) {
       const double t = dev > 0 ? limit : -limit;
       d = turned_2d(bis, t);
     }
-    const double c_dn = (std::max)(dot_2d(d, toward), 0.5);
+    const double c_dn = (std::max)(CGAL::scalar_product(d, toward), 0.5);
     const double lambda = 0.5 * h.dist / c_dn;
-    return Point_2d{b.x + lambda * d.x, b.y + lambda * d.y};
+    return b + lambda * d;
   }
 
   Buffer_zone<K>& m_zone;

@@ -38,7 +38,7 @@ public:
   {
     std::size_t loop = 0, edge = 0; // edge k joins loop vertex k to k+1
     double t = 0, dist = std::numeric_limits<double>::infinity();
-    Point_2d point{0, 0};
+    Point_2d point = ORIGIN;
   };
 
   Loop_locator(std::vector<std::vector<Point_2d>> loops) : m_loops(std::move(loops))
@@ -52,12 +52,12 @@ public:
       for(std::size_t k = 0; k < v.size(); ++k) {
         const Point_2d& a = v[k];
         const Point_2d& b = v[(k + 1) % v.size()];
-        boxes.emplace_back((std::min)(a.x, b.x), (std::min)(a.y, b.y), (std::max)(a.x, b.x),
-                           (std::max)(a.y, b.y));
+        boxes.emplace_back((std::min)(a.x(), b.x()), (std::min)(a.y(), b.y()), (std::max)(a.x(), b.x()),
+                           (std::max)(a.y(), b.y()));
         m_edge_of.push_back({l, k});
-        m_arc[l][k + 1] = m_arc[l][k] + length_2d(minus_2d(b, a));
-        xmin = (std::min)(xmin, a.x); xmax = (std::max)(xmax, a.x);
-        ymin = (std::min)(ymin, a.y); ymax = (std::max)(ymax, a.y);
+        m_arc[l][k + 1] = m_arc[l][k] + length_2d(b - a);
+        xmin = (std::min)(xmin, a.x()); xmax = (std::max)(xmax, a.x());
+        ymin = (std::min)(ymin, a.y()); ymax = (std::max)(ymax, a.y());
       }
     }
     m_diag = std::hypot(xmax - xmin, ymax - ymin);
@@ -83,7 +83,7 @@ public:
     Hit best;
     double r = (std::max)(radius, 1e-300);
     for(;;) {
-      m_tree->query(Bbox_2(p.x - r, p.y - r, p.x + r, p.y + r), [&](std::size_t s) {
+      m_tree->query(Bbox_2(p.x() - r, p.y() - r, p.x() + r, p.y() + r), [&](std::size_t s) {
         if(l != none && (m_edge_of[s][0] != l) != other_than) return;
         Hit h = on_edge(p, m_edge_of[s][0], m_edge_of[s][1]);
         // equally near edges (a point on a symmetry axis) by their index, not by rounding:
@@ -142,7 +142,7 @@ private:
     h.edge = k;
     h.t = nearest_segment_parameter(p, a, b);
     h.point = along_2d(a, b, h.t);
-    h.dist = length_2d(minus_2d(p, h.point));
+    h.dist = length_2d(p - h.point);
     return h;
   }
 

@@ -2,10 +2,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): Quad_mesher_2 developers
 //
-// Small double-precision helpers for the shape of one quadrilateral (corner angles, scaled
-// Jacobians, edge lengths, its deviation from a square's angles) and the plane geometry the
-// buffer stages search with (projections onto segments, bisectors, turns). Quality measures are computed in `double` by design (see
-// STYLE.md, "Exactness"); no topological decision is taken here.
+// The shape of one quadrilateral (corner angles, scaled Jacobians, edge lengths, its deviation
+// from a square's angles) and the plane constructions the buffer stages search with that the
+// kernel lacks (projection parameters, bisectors, turns by an angle), on the approximate
+// kernel's points and vectors. Measures, computed in `double` by design (see STYLE.md,
+// "Exactness"): no topological decision is taken here.
 
 #ifndef CGAL_QUAD_MESHER_2_INTERNAL_QUAD_GEOMETRY_H
 #define CGAL_QUAD_MESHER_2_INTERNAL_QUAD_GEOMETRY_H
@@ -23,35 +24,28 @@ namespace CGAL {
 namespace Quad_mesher_2 {
 namespace internal {
 
-/// A point (or vector) in double precision.
-struct Point_2d
+/// the mean of the points in [first, last), summed in order (a Laplacian step's target)
+template <class Iterator>
+inline Point_2d mean_2d(Iterator first, Iterator last)
 {
-  double x;
-  double y;
-};
-
-template <class Point_2>
-inline Point_2d to_point_2d(const Point_2& p)
-{
-  return Point_2d{CGAL::to_double(p.x()), CGAL::to_double(p.y())};
+  Vector_2d sum = NULL_VECTOR;
+  double n = 0;
+  for(; first != last; ++first, ++n) sum = sum + (*first - ORIGIN);
+  return ORIGIN + sum / n;
 }
 
-inline double cross_2d(const Point_2d& a, const Point_2d& b) { return a.x * b.y - a.y * b.x; }
-inline double dot_2d(const Point_2d& a, const Point_2d& b) { return a.x * b.x + a.y * b.y; }
-inline Point_2d minus_2d(const Point_2d& a, const Point_2d& b) { return Point_2d{a.x - b.x, a.y - b.y}; }
-inline double length_2d(const Point_2d& a) { return std::sqrt(a.x * a.x + a.y * a.y); }
 /// the vector `v` turned counter-clockwise by `radians`
-inline Point_2d turned_2d(const Point_2d& v, double radians)
+inline Vector_2d turned_2d(const Vector_2d& v, double radians)
 {
   const double cs = std::cos(radians), sn = std::sin(radians);
-  return Point_2d{ cs * v.x - sn * v.y, sn * v.x + cs * v.y };
+  return Vector_2d(cs * v.x() - sn * v.y(), sn * v.x() + cs * v.y());
 }
 /// the point `p` turned counter-clockwise about `centre` by `radians`
 inline Point_2d turned_about_2d(const Point_2d& p, const Point_2d& centre, double radians)
 {
   const double cs = std::cos(radians), sn = std::sin(radians);
-  const Point_2d v = minus_2d(p, centre);
-  return Point_2d{ centre.x + cs * v.x - sn * v.y, centre.y + sn * v.x + cs * v.y };
+  const Vector_2d v = p - centre;
+  return Point_2d(centre.x() + cs * v.x() - sn * v.y(), centre.y() + sn * v.x() + cs * v.y());
 }
 
 /// The angle in degrees, in [0, 360), swept counter-clockwise from a vector u to a vector v
@@ -72,9 +66,9 @@ inline double angle_degrees(double cross, double dot)
 /// Returns 0 if one of the two edges has zero length.
 inline double corner_angle_degrees(const Point_2d& prev, const Point_2d& p, const Point_2d& next)
 {
-  const Point_2d e_next = minus_2d(next, p);
-  const Point_2d e_prev = minus_2d(prev, p);
-  return angle_degrees(cross_2d(e_next, e_prev), dot_2d(e_next, e_prev));
+  const Vector_2d e_next = next - p;
+  const Vector_2d e_prev = prev - p;
+  return angle_degrees(CGAL::determinant(e_next, e_prev), CGAL::scalar_product(e_next, e_prev));
 }
 
 /// Scaled Jacobian at corner `p` of a counter-clockwise polygon:
@@ -82,12 +76,12 @@ inline double corner_angle_degrees(const Point_2d& prev, const Point_2d& p, cons
 /// Returns 0 if one of the two edges has zero length.
 inline double corner_scaled_jacobian(const Point_2d& prev, const Point_2d& p, const Point_2d& next)
 {
-  const Point_2d e_next = minus_2d(next, p);
-  const Point_2d e_prev = minus_2d(prev, p);
+  const Vector_2d e_next = next - p;
+  const Vector_2d e_prev = prev - p;
   const double l = length_2d(e_next) * length_2d(e_prev);
   if(!(l > 0))
     return 0.0;
-  double s = cross_2d(e_next, e_prev) / l;
+  double s = CGAL::determinant(e_next, e_prev) / l;
   return (std::max)(-1.0, (std::min)(1.0, s));
 }
 
@@ -105,7 +99,7 @@ inline std::array<double, 4> quad_edge_lengths(const std::array<Point_2d, 4>& q)
 {
   std::array<double, 4> l;
   for(int k = 0; k < 4; ++k)
-    l[k] = length_2d(minus_2d(q[(k + 1) % 4], q[k]));
+    l[k] = length_2d(q[(k + 1) % 4] - q[k]);
   return l;
 }
 
@@ -120,7 +114,7 @@ inline std::array<double, 4> quad_corner_scaled_jacobians(const std::array<Point
     const double l = len[k] * len[(k + 3) % 4];
     s[k] = 0.0;
     if(l > 0)
-      s[k] = (std::max)(-1.0, (std::min)(1.0, cross_2d(minus_2d(q[(k + 1) % 4], q[k]), minus_2d(q[(k + 3) % 4], q[k])) / l));
+      s[k] = (std::max)(-1.0, (std::min)(1.0, CGAL::determinant(q[(k + 1) % 4] - q[k], q[(k + 3) % 4] - q[k]) / l));
   }
   return s;
 }
@@ -162,47 +156,47 @@ inline double quad_aspect_ratio(const std::array<Point_2d, 4>& q)
 /// the parameter in [0, 1] of the point of segment (a, b) nearest to p
 inline double nearest_segment_parameter(const Point_2d& p, const Point_2d& a, const Point_2d& b)
 {
-  const Point_2d ab = minus_2d(b, a);
-  const double len2 = dot_2d(ab, ab);
-  const double t = len2 > 0 ? dot_2d(minus_2d(p, a), ab) / len2 : 0.0;
+  const Vector_2d ab = b - a;
+  const double len2 = CGAL::scalar_product(ab, ab);
+  const double t = len2 > 0 ? CGAL::scalar_product(p - a, ab) / len2 : 0.0;
   return (std::min)(1.0, (std::max)(0.0, t));
 }
 
 /// a + t (b - a)
 inline Point_2d along_2d(const Point_2d& a, const Point_2d& b, double t)
 {
-  return Point_2d{ a.x + t * (b.x - a.x), a.y + t * (b.y - a.y) };
+  return a + t * (b - a);
 }
 
 /// the distance from p to segment (a, b)
 inline double point_segment_distance(const Point_2d& p, const Point_2d& a, const Point_2d& b)
 {
-  return length_2d(minus_2d(p, along_2d(a, b, nearest_segment_parameter(p, a, b))));
+  return length_2d((p - along_2d(a, b, nearest_segment_parameter(p, a, b))));
 }
 
 /// v scaled to unit length (zero stays zero)
-inline Point_2d normalized_2d(const Point_2d& v)
+inline Vector_2d normalized_2d(const Vector_2d& v)
 {
   const double l = length_2d(v);
-  return l > 0 ? Point_2d{v.x / l, v.y / l} : Point_2d{0, 0};
+  return l > 0 ? v / l : NULL_VECTOR;
 }
 
 /// the angle (degrees, in [0, 360)) on the right of the path a -> b -> c, at b
 inline double right_side_angle(const Point_2d& a, const Point_2d& b, const Point_2d& c)
 {
-  const Point_2d t1 = minus_2d(b, a), t2 = minus_2d(c, b);
-  const double turn = std::atan2(cross_2d(t1, t2), dot_2d(t1, t2)) * 180.0 / 3.14159265358979323846;
+  const Vector_2d t1 = b - a, t2 = c - b;
+  const double turn = std::atan2(CGAL::determinant(t1, t2), CGAL::scalar_product(t1, t2)) * 180.0 / 3.14159265358979323846;
   return 180.0 + turn;
 }
 
 /// the unit bisector of the angle on the right of a -> b -> c
-inline Point_2d right_bisector(const Point_2d& a, const Point_2d& b, const Point_2d& c)
+inline Vector_2d right_bisector(const Point_2d& a, const Point_2d& b, const Point_2d& c)
 {
-  const Point_2d t1 = normalized_2d(minus_2d(b, a)), t2 = normalized_2d(minus_2d(c, b));
-  Point_2d s{t1.x + t2.x, t1.y + t2.y};
+  const Vector_2d t1 = normalized_2d(b - a), t2 = normalized_2d(c - b);
+  const Vector_2d s = t1 + t2;
   if(length_2d(s) < 1e-9) // a spike: the bisector points back along the incoming edge
-    return Point_2d{-t1.x, -t1.y};
-  return normalized_2d(Point_2d{s.y, -s.x});
+    return -t1;
+  return normalized_2d(s.perpendicular(CLOCKWISE));
 }
 
 /// largest deviation of a quad's angles from 90 degrees; a large penalty if it is not strictly
@@ -212,21 +206,21 @@ inline double quad_badness(const std::array<Point_2d, 4>& q)
   // at a convex corner |angle - 90| = asin(|cos angle|), increasing in |cos|: one asin for
   // the worst corner instead of an atan2 per corner (the buffer's inner loops call this)
   // edge k runs from corner k to corner k + 1; each length is taken once
-  std::array<Point_2d, 4> e;
+  std::array<Vector_2d, 4> e;
   std::array<double, 4> len;
   for(int k = 0; k < 4; ++k) {
-    e[k] = minus_2d(q[(k + 1) % 4], q[k]);
+    e[k] = q[(k + 1) % 4] - q[k];
     len[k] = length_2d(e[k]);
   }
   double worst_cos = 0;
   for(int c = 0; c < 4; ++c) {
-    const Point_2d& in = e[(c + 3) % 4];
-    const Point_2d& out = e[c];
-    const double cr = cross_2d(in, out);
+    const Vector_2d& in = e[(c + 3) % 4];
+    const Vector_2d& out = e[c];
+    const double cr = CGAL::determinant(in, out);
     const double l1 = len[c], l2 = len[(c + 3) % 4];
     if(!(cr > 1e-6 * l1 * l2) || l1 == 0 || l2 == 0) // flat corners count as invalid
       return 1000.0 + (cr < 0 ? 100.0 : 0.0);
-    worst_cos = (std::max)(worst_cos, std::abs(dot_2d(out, in)) / (l1 * l2));
+    worst_cos = (std::max)(worst_cos, std::abs(CGAL::scalar_product(out, in)) / (l1 * l2));
   }
   return std::asin((std::min)(worst_cos, 1.0)) * (180.0 / 3.14159265358979323846);
 }

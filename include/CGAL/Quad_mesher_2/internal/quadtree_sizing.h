@@ -102,8 +102,8 @@ public:
       std::array<Point_2, 4> around;
       std::size_t n = 0;
       for(int c = 0; c < 4; ++c) {
-        const Point_2 q = make_point(r.first.x + ((c & 1) ? delta : -delta),
-                                     r.first.y + ((c & 2) ? delta : -delta));
+        const Point_2 q = make_point(r.first.x() + ((c & 1) ? delta : -delta),
+                                     r.first.y() + ((c & 2) ? delta : -delta));
         if(tree.contains(q)) around[n++] = q;
       }
       // at least one level finer than it is there now

@@ -178,7 +178,7 @@ private:
       runs.pop_back();
       const std::size_t len = (b + N - a) % N == 0 ? N : (b + N - a) % N;
       const Point_2d A = nodes[a].xy, B = nodes[b].xy;
-      const double chord = length_2d(minus_2d(B, A));
+      const double chord = length_2d(B - A);
       const double tol = m_zone.chord_tolerance;
       double worst = -1;
       std::size_t at = none;
@@ -330,7 +330,7 @@ private:
     std::size_t e = 0;
     double longest = -1;
     for(std::size_t j = 0; j < k; ++j) {
-      const double len = length_2d(minus_2d(m_zone.xy[gid[(g0 + j + 1) % M0]], m_zone.xy[gid[g0 + j]]));
+      const double len = length_2d(m_zone.xy[gid[(g0 + j + 1) % M0]] - (m_zone.xy[gid[g0 + j]]));
       if(len > longest) { longest = len; e = j; }
     }
     const double a = gparam[g0 + e], b = g0 + e + 1 < M0 ? gparam[g0 + e + 1] : gparam[0] + L;

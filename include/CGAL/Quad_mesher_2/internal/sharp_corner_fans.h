@@ -70,11 +70,11 @@ public:
     const std::size_t n = cyc.size();
     const std::size_t a0 = (a + n - 1) % n, b1 = (b + 1) % n;
     auto side_badness = [&](const Point_2d& f) { // at the corner, between f and the nearer side
-      const Point_2d u = minus_2d(f, corner);
+      const Vector_2d u = f - corner;
       double to_side = 180;
       for(const Point_2d& s : { before, after }) {
-        const Point_2d v = minus_2d(s, corner);
-        to_side = (std::min)(to_side, angle_degrees(std::abs(cross_2d(u, v)), dot_2d(u, v)));
+        const Vector_2d v = s - corner;
+        to_side = (std::min)(to_side, angle_degrees(std::abs(CGAL::determinant(u, v)), CGAL::scalar_product(u, v)));
       }
       return std::abs(to_side - 90);
     };
@@ -92,7 +92,7 @@ public:
     if(best <= 45.0) return;
     auto move_middle = [&]() {
       const Point_2d from = F[m];
-      const Point_2d target{ F[a].x + F[b].x - corner.x, F[a].y + F[b].y - corner.y };
+      const Point_2d target(F[a].x() + F[b].x() - corner.x(), F[a].y() + F[b].y() - corner.y());
       Point_2d best_f = from;
       for(double t : { 1.0, 0.75, 0.5, 0.25 }) {
         F[m] = along_2d(from, target, t);
@@ -119,10 +119,10 @@ public:
     }
     for(std::size_t k = 0; k < 3; ++k) {
       const std::size_t i = fan[k];
-      if(F[i].x == before_move[k].x && F[i].y == before_move[k].y) continue;
+      if(F[i] == before_move[k]) continue;
       const std::size_t id = m_zone.first_base[c] + i;
       m_zone.xy[id] = F[i];
-      m_zone.mesh.points[id] = m_zone.traits.construct_point_2_object()(FT(F[i].x), FT(F[i].y));
+      m_zone.mesh.points[id] = m_zone.mesh_point(F[i]);
     }
   }
 
@@ -151,19 +151,19 @@ public:
     };
     double best = worst(F[m]);
     if(best <= 45.0) return;
-    const Point_2d bis = right_bisector(prev, corner, next); // out of the domain
-    const double r = length_2d(minus_2d(F[m], corner));
-    const Point_2d target{ corner.x - r * bis.x, corner.y - r * bis.y };
+    const Vector_2d bis = right_bisector(prev, corner, next); // out of the domain
+    const double r = length_2d(F[m] - corner);
+    const Point_2d target = corner - r * bis;
     Point_2d best_f = F[m];
     for(double t : { 1.0, 0.75, 0.5, 0.25 }) {
       const Point_2d f = along_2d(F[m], target, t);
       const double w = worst(f);
       if(w < best - angle_tolerance) { best = w; best_f = f; }
     }
-    if(best_f.x == F[m].x && best_f.y == F[m].y) return;
+    if(best_f == F[m]) return;
     const std::size_t id = m_zone.first_base[c] + m;
     F[m] = m_zone.xy[id] = best_f;
-    m_zone.mesh.points[id] = m_zone.traits.construct_point_2_object()(FT(best_f.x), FT(best_f.y));
+    m_zone.mesh.points[id] = m_zone.mesh_point(best_f);
   }
 
 private:

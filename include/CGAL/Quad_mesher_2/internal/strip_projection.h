@@ -206,8 +206,8 @@ private:
       while(hi - lo + 1 < (four_at[k] ? 4u : 3u)) {
         const bool before = free_point(lo - 1), after = hi + 2 < n && free_point(hi + 1);
         if(!before && !after) break;
-        const double db = before ? length_2d(minus_2d(F[rot(lo - 1)], corner)) : HUGE_VAL;
-        const double da = after ? length_2d(minus_2d(F[rot(hi + 1)], corner)) : HUGE_VAL;
+        const double db = before ? length_2d(F[rot(lo - 1)] - corner) : HUGE_VAL;
+        const double da = after ? length_2d(F[rot(hi + 1)] - corner) : HUGE_VAL;
         const std::size_t r = db <= da ? --lo : ++hi;
         P[r] = P[a];
         snap[rot(r)] = k;
@@ -245,7 +245,7 @@ private:
         if(!at_end && snap[rot(a)] != none && m_fans.needs_fan_of_three(l, snap[rot(a)]))
           keep_fan_points(proj, a, b, four_at, anchor, last_kept);
       auto spacing = [&](std::size_t r1, std::size_t r2) {
-        return length_2d(minus_2d(F[rot(r1)], F[rot(r2)]));
+        return length_2d(F[rot(r1)] - F[rot(r2)]);
       };
       if(anchor > a) { // a .. anchor-1 go before p0
         const std::size_t cnt = (anchor == n ? b + 1 : anchor) - a;
@@ -293,15 +293,15 @@ private:
     // of more, those whose middle lies nearest the corner's bisector
     if(a != 0 && b - a + 1 > kept && !needle) {
       const Point_2d C = loop_xy[k];
-      const Point_2d bis = right_bisector(loop_xy[(k + nv - 1) % nv], C, loop_xy[(k + 1) % nv]);
+      const Vector_2d bis = right_bisector(loop_xy[(k + nv - 1) % nv], C, loop_xy[(k + 1) % nv]);
       double best = HUGE_VAL;
       for(std::size_t s = a; s + kept - 1 <= b; ++s) {
-        Point_2d mid = normalized_2d(minus_2d(F[rot(s + 1)], C));
+        Vector_2d mid = normalized_2d(F[rot(s + 1)] - C);
         if(kept == 4) {
-          const Point_2d other = normalized_2d(minus_2d(F[rot(s + 2)], C));
-          mid = normalized_2d(Point_2d{ mid.x + other.x, mid.y + other.y });
+          const Vector_2d other = normalized_2d(F[rot(s + 2)] - C);
+          mid = normalized_2d(mid + other);
         }
-        const double d = dot_2d(mid, bis); // -1 on the bisector
+        const double d = CGAL::scalar_product(mid, bis); // -1 on the bisector
         if(d < best) { best = d; first_kept = s; }
       }
     }

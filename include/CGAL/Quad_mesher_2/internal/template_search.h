@@ -41,7 +41,7 @@ void pattern_search(const Point_2d& at, double scale, const Consider& consider)
     const Point_2d from = at;
     bool moved = false;
     for(int k = 0; k < 16; ++k)
-      moved = consider(Point_2d{ from.x + step * std::cos(k * Buffer_tolerances::pi / 8), from.y + step * std::sin(k * Buffer_tolerances::pi / 8) }) || moved;
+      moved = consider(from + step * Vector_2d(std::cos(k * Buffer_tolerances::pi / 8), std::sin(k * Buffer_tolerances::pi / 8))) || moved;
     step = moved ? (std::min)(2 * step, 0.05 * scale) : step / 2;
   }
 }
@@ -95,9 +95,9 @@ private:
     if(best == 0 || buffer_angle_excess(right_side_angle(m_zone.xy[a], old, m_zone.xy[c])) <= angle_tolerance
        || m_zone.near_input_corner(b))
       return false;
-    const double e = 0.5 * (length_2d(minus_2d(old, m_zone.xy[a])) + length_2d(minus_2d(m_zone.xy[c], old)));
+    const double e = 0.5 * (length_2d(old - m_zone.xy[a]) + length_2d(m_zone.xy[c] - old));
     auto ring = [&](double r, int k) {
-      return Point_2d{ old.x + r * e * std::cos(k * pi / 6), old.y + r * e * std::sin(k * pi / 6) };
+      return old + (r * e) * Vector_2d(std::cos(k * pi / 6), std::sin(k * pi / 6));
     };
     Point_2d best_p = old;
     auto consider = [&](const Point_2d& p) {
@@ -137,9 +137,9 @@ private:
         m_zone.xy[b] = old;
       }
     }
-    if(best_p.x == old.x && best_p.y == old.y) return false;
+    if(best_p == old) return false;
     m_zone.xy[b] = best_p;
-    m_zone.mesh.points[b] = m_zone.traits.construct_point_2_object()(FT(best_p.x), FT(best_p.y));
+    m_zone.mesh.points[b] = m_zone.mesh_point(best_p);
     ++m_zone.report.searched_vertices;
     return true;
   }
@@ -177,7 +177,7 @@ private:
         if(std::find(movers.begin(), movers.end(), v) == movers.end()) continue;
         const std::size_t a = node(d - 1), c = node(d + 1);
         const Point_2d old = m_zone.xy[v];
-        const double e = 0.5 * (length_2d(minus_2d(old, m_zone.xy[a])) + length_2d(minus_2d(m_zone.xy[c], old)));
+        const double e = 0.5 * (length_2d(old - m_zone.xy[a]) + length_2d(m_zone.xy[c] - old));
         double best = objective(false);
         Point_2d best_p = old;
         auto consider = [&](const Point_2d& p) {
@@ -191,19 +191,19 @@ private:
         };
         for(double r : { 0.05, 0.1, 0.2 })
           for(int k = 0; k < 12; ++k)
-            consider(Point_2d{ old.x + r * e * std::cos(k * pi / 6), old.y + r * e * std::sin(k * pi / 6) });
+            consider(old + (r * e) * Vector_2d(std::cos(k * pi / 6), std::sin(k * pi / 6)));
         pattern_search(best_p, e, consider);
         m_zone.xy[v] = best_p;
-        moved = moved || best_p.x != old.x || best_p.y != old.y;
+        moved = moved || best_p != old;
       }
       if(!moved) break;
     }
     const bool kept = objective(true) < start - angle_tolerance;
     for(std::size_t k = 0; k < movers.size(); ++k) {
       const std::size_t v = movers[k];
-      if(m_zone.xy[v].x == before[k].x && m_zone.xy[v].y == before[k].y) continue;
+      if(m_zone.xy[v] == before[k]) continue;
       if(kept)
-        m_zone.mesh.points[v] = m_zone.traits.construct_point_2_object()(FT(m_zone.xy[v].x), FT(m_zone.xy[v].y));
+        m_zone.mesh.points[v] = m_zone.mesh_point(m_zone.xy[v]);
       else
         m_zone.xy[v] = before[k];
     }
@@ -265,7 +265,7 @@ private:
   // whether edge v-w, v at p, keeps half the length it had after the clearance at least
   bool keeps_half_length(std::size_t v, std::size_t w, const Point_2d& p) const
   {
-    return length_2d(minus_2d(m_zone.xy[w], p)) >= 0.5 * length_2d(minus_2d(m_zone.cleared_xy[w], m_zone.cleared_xy[v]));
+    return length_2d(m_zone.xy[w] - p) >= 0.5 * length_2d(m_zone.cleared_xy[w] - m_zone.cleared_xy[v]);
   }
 
   // the largest deviation from 90 degrees of the quads at v
@@ -309,16 +309,13 @@ private:
         if(current <= 45.0) continue;
         const Point_2d old = m_zone.xy[v];
         const Point_2d lap = m_zone.parallelogram_targets(v, quads_at, targets);
-        Point_2d mean{ 0, 0 };
-        for(const Point_2d& t : targets) { mean.x += t.x; mean.y += t.y; }
-        const double nq = double(targets.size());
-        targets.push_back(Point_2d{ mean.x / nq, mean.y / nq });
+        targets.push_back(mean_2d(targets.begin(), targets.end()));
         targets.push_back(lap);
         double best = current;
         Point_2d best_p = old;
         for(const Point_2d& t : targets)
           for(double step : { 1.0, 0.5, 0.25, 0.1 }) {
-            m_zone.xy[v] = Point_2d{ old.x + step * (t.x - old.x), old.y + step * (t.y - old.y) };
+            m_zone.xy[v] = along_2d(old, t, step);
             const double w = worst_badness_at(v, quads_at);
             if(w < best - angle_tolerance && !short_edge(v)) {
               best = w;
@@ -334,9 +331,9 @@ private:
     for(std::size_t v : around) ok = ok && worst_badness_at(v, quads_at) <= 45.0 + core_slack;
     for(std::size_t k = 0; k < around.size(); ++k) {
       const std::size_t v = around[k];
-      if(m_zone.xy[v].x == before[k].x && m_zone.xy[v].y == before[k].y) continue;
+      if(m_zone.xy[v] == before[k]) continue;
       if(ok) {
-        m_zone.mesh.points[v] = m_zone.traits.construct_point_2_object()(FT(m_zone.xy[v].x), FT(m_zone.xy[v].y));
+        m_zone.mesh.points[v] = m_zone.mesh_point(m_zone.xy[v]);
         m_zone.report.shaped_interior += m_zone.shaped_mark[v] == 0 ? 1 : 0;
         m_zone.shaped_mark[v] = 1;
       } else {
