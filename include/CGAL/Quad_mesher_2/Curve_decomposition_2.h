@@ -14,6 +14,7 @@
 #include <CGAL/Quad_mesher_2/Domain_2.h>
 #include <CGAL/Quad_mesher_2/Domain_loops_2.h>
 #include <CGAL/Quad_mesher_2/Meshing_error.h>
+#include <CGAL/Quad_mesher_2/internal/approximate_kernel.h>
 
 #include <CGAL/Bbox_2.h>
 #include <CGAL/assertions.h>
@@ -254,30 +255,6 @@ struct Curve_decomposition_options
 
 namespace internal {
 
-inline double curves_cross(const std::array<double, 2>& a, const std::array<double, 2>& b)
-{
-  return a[0] * b[1] - a[1] * b[0];
-}
-
-inline double curves_norm(const std::array<double, 2>& a) { return std::hypot(a[0], a[1]); }
-
-/// The angle in [0, pi] between the directions of `a` and `b`.
-inline double curves_angle(const std::array<double, 2>& a, const std::array<double, 2>& b)
-{
-  return std::atan2(std::abs(curves_cross(a, b)), a[0] * b[0] + a[1] * b[1]);
-}
-
-/// The distance from `p` to the segment `[a, b]`.
-inline double curves_segment_distance(const std::array<double, 2>& p, const std::array<double, 2>& a,
-                                      const std::array<double, 2>& b)
-{
-  const double dx = b[0] - a[0], dy = b[1] - a[1];
-  const double l2 = dx * dx + dy * dy;
-  double t = l2 > 0 ? ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / l2 : 0;
-  t = (std::max)(0.0, (std::min)(1.0, t));
-  return std::hypot(p[0] - a[0] - t * dx, p[1] - a[1] - t * dy);
-}
-
 template <class K>
 double curves_bbox_diagonal(const std::vector<typename K::Point_2>& pts, const K& traits)
 {
@@ -340,7 +317,11 @@ std::vector<double> curves_decompose_parameters(const Closed_cubic_spline_2<K>& 
                                                 double tol, std::size_t max_points, const std::string& what,
                                                 bool place_by_curvature = true)
 {
-  typedef std::array<double, 2> V;
+  // the spline's points and derivatives, doubles, as the approximate kernel's
+  typedef Approximate_kernel::Point_2 P;
+  typedef Approximate_kernel::Vector_2 V;
+  auto as_vector = [](const typename Closed_cubic_spline_2<K>::Vector& d) { return V(d[0], d[1]); };
+  auto point_at = [&](double u) { const auto p = spline.point(u); return P(p[0], p[1]); };
   const std::size_t n = spline.number_of_points();
 
   // ---- 1. placement by curvature --------------------------------------------------------
@@ -361,11 +342,11 @@ std::vector<double> curves_decompose_parameters(const Closed_cubic_spline_2<K>& 
     double prev = 0;
     for(int k = 0; k <= samples; ++k) {
       const double t = h * k / samples;
-      const V d1 = spline.eval(i, t, 1), d2 = spline.eval(i, t, 2);
-      const double speed = curves_norm(d1);
+      const V d1 = as_vector(spline.eval(i, t, 1)), d2 = as_vector(spline.eval(i, t, 2));
+      const double squared_speed = d1.squared_length(), speed = std::sqrt(squared_speed);
       double g = 0;
       if(speed > 0) {
-        const double kappa_speed = std::abs(curves_cross(d1, d2)) / (speed * speed);  // k |S'|
+        const double kappa_speed = std::abs(CGAL::determinant(d1, d2)) / squared_speed;  // k |S'|
         g = (std::max)(kappa_speed / angle_target, std::sqrt(kappa_speed * speed / (8 * tol_target)));
       }
       if(k > 0) cumulative[i][k] = cumulative[i][k - 1] + 0.5 * (prev + g) * (h / samples);
@@ -400,27 +381,29 @@ std::vector<double> curves_decompose_parameters(const Closed_cubic_spline_2<K>& 
   // most, so the curve is a shallow arc over a chord and the samples find its maximum
   // distance); each pair of consecutive chords: the angle between them. A chord whose error
   // is too large, and both chords at a vertex that turns too much, are split at their
-  // parameter midpoint. Vertices are only ever added, so the control points stay.
+  // parameter midpoint. Vertices are only ever added, so the control points stay. Both are
+  // measures against thresholds, taken in doubles.
   const int error_samples = 16;
   const double min_piece = spline.period() * std::ldexp(1.0, -45);
   for(;;) {
     const std::size_t m = params.size();
-    std::vector<V> pts(m);
-    for(std::size_t v = 0; v < m; ++v) pts[v] = spline.point(params[v]);
+    std::vector<P> pts(m);
+    for(std::size_t v = 0; v < m; ++v) pts[v] = point_at(params[v]);
     auto param_end = [&](std::size_t c) { return c + 1 < m ? params[c + 1] : spline.period(); };
     std::vector<char> split(m, 0);
     bool any = false;
     for(std::size_t c = 0; c < m; ++c) {
       const std::size_t d = (c + 1) % m;
       const double ua = params[c], ub = param_end(c);
-      double err = 0;
+      const Approximate_kernel::Segment_2 chord(pts[c], pts[d]);
+      double squared_err = 0;
       for(int k = 1; k < error_samples; ++k)
-        err = (std::max)(err, curves_segment_distance(spline.point(ua + (ub - ua) * k / error_samples), pts[c], pts[d]));
-      if(err > tol) split[c] = any = true;
+        squared_err = (std::max)(squared_err, CGAL::squared_distance(point_at(ua + (ub - ua) * k / error_samples), chord));
+      if(squared_err > tol * tol) split[c] = any = true;
       const std::size_t e = (d + 1) % m;
-      const V c1 = {pts[d][0] - pts[c][0], pts[d][1] - pts[c][1]};
-      const V c2 = {pts[e][0] - pts[d][0], pts[e][1] - pts[d][1]};
-      if(curves_angle(c1, c2) > max_angle) split[c] = split[d] = any = true;
+      const V c1 = pts[d] - pts[c], c2 = pts[e] - pts[d];
+      const double turn = std::atan2(std::abs(CGAL::determinant(c1, c2)), CGAL::scalar_product(c1, c2));  // in [0, pi]
+      if(turn > max_angle) split[c] = split[d] = any = true;
     }
     if(!any) break;
     std::vector<double> np;
@@ -430,9 +413,9 @@ std::vector<double> curves_decompose_parameters(const Closed_cubic_spline_2<K>& 
       if(!split[c]) continue;
       const double ua = params[c], ub = param_end(c), mid = 0.5 * (ua + ub);
       if(ub - ua < min_piece || !(mid > ua && mid < ub)) {
-        const V p = spline.point(ua);
-        throw Meshing_error(what + ": cannot meet the turning angle or the chord error near (" + loops_format_double(p[0]) +
-                            ", " + loops_format_double(p[1]) +
+        const P p = point_at(ua);
+        throw Meshing_error(what + ": cannot meet the turning angle or the chord error near (" + loops_format_double(p.x()) +
+                            ", " + loops_format_double(p.y()) +
                             "), where the spline has a cusp or a kink; move or add control points there");
       }
       np.push_back(mid);

@@ -8,17 +8,16 @@
 #include <CGAL/Quad_mesher_2/Domain_2.h>
 #include <CGAL/Quad_mesher_2/Domain_loops_2.h>
 #include <CGAL/Quad_mesher_2/Meshing_error.h>
+#include <CGAL/Quad_mesher_2/internal/approximate_kernel.h>
 
 #include <CGAL/Bbox_2.h>
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstddef>
-#include <cstdint>
-#include <limits>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -30,7 +29,9 @@ namespace internal {
 // merge with another or vanish when the buffer zone is cleared. We sample the boundary, find
 // for each sample the nearest boundary point that is not just its neighbour along the same
 // loop, and ask for cells of side <= w/4 at the sample, at that nearest point and halfway
-// between them. A size field only: computed in doubles.
+// between them. A size field: measured in doubles (the approximate kernel); what it decides on
+// the input, which segments are neighbours and which corners are convex, it decides on vertex
+// indices and with the traits' exact orientation.
 //
 // "Not its neighbour": a point r on the same loop counts only if the way from the sample to r
 // along the loop is more than `detour` times the straight distance; a smooth curve bending
@@ -41,21 +42,27 @@ namespace internal {
 // out a needle's sides face each other across a narrowing channel.
 struct Size_sample
 {
-  std::array<double, 2> point;
+  Approximate_kernel::Point_2 point;
   double size;
 };
 
 class Boundary_gap_finder
 {
 public:
-  typedef std::array<double, 2> P;
+  typedef Approximate_kernel::Point_2 P;
+  typedef Approximate_kernel::Vector_2 V;
+  typedef Approximate_kernel::Segment_2 S;
 
+  // A loop's segment from domain vertex `source_vertex` to `target_vertex`: which segments
+  // are neighbours is decided on these indices, not on the rounded positions.
   struct Segment
   {
-    P a, b;
+    S segment;
+    std::size_t source_vertex, target_vertex;
     std::size_t loop;
-    double arc_a;  // arc length along the loop at a
+    double arc_a;  // arc length along the loop at the source
     double length;
+    bool needle_at_source; // the corner at the source (with the loop's previous segment) is a needle
   };
 
   explicit Boundary_gap_finder(std::vector<Segment> segments, std::vector<double> loop_lengths,
@@ -84,17 +91,15 @@ public:
 
   const std::vector<Segment>& segments() const { return m_segments; }
 
-  // true if consecutive segments s, r of a loop (domain on the left) make a corner sharper
-  // than `needle_angle` inside the domain. A reflex corner's sides face each other across the
-  // outside, which the domain's cells never need to resolve.
-  static bool needle_corner(const Segment& s, const Segment& r)
+  // true if the angle at `corner` between its sides to `before` and to `after` is smaller
+  // than `needle_angle`. A threshold on a measure, so in doubles; whether the corner is
+  // convex (a reflex corner's sides face each other across the outside, which the domain's
+  // cells never need to resolve) is the caller's exact decision on the input.
+  static bool sharper_than_needle(const P& before, const P& corner, const P& after)
   {
-    const Segment& in = s.b == r.a ? s : r;
-    const Segment& out = s.b == r.a ? r : s;
-    const double ux = in.a[0] - in.b[0], uy = in.a[1] - in.b[1]; // from the corner back along `in`
-    const double vx = out.b[0] - out.a[0], vy = out.b[1] - out.a[1];
-    const double cross = vx * uy - vy * ux, dot = ux * vx + uy * vy;
-    return cross > 0 && std::atan2(cross, dot) < needle_angle * 3.14159265358979323846 / 180;
+    const V u = before - corner, v = after - corner;
+    const double angle = std::atan2(std::abs(CGAL::determinant(v, u)), CGAL::scalar_product(u, v));
+    return angle < needle_angle * CGAL_PI / 180;
   }
 
   // the part of a corner's sides, as a share of the shorter, left to the corner quad
@@ -108,21 +113,22 @@ private:
   {
     double best = HUGE_VAL;
     const Segment& here = m_segments[on];
-    m_tree.query(Bbox_2(q[0] - r, q[1] - r, q[0] + r, q[1] + r), [&](std::size_t k) {
+    m_tree.query(Bbox_2(q.x() - r, q.y() - r, q.x() + r, q.y() + r), [&](std::size_t k) {
       const Segment& s = m_segments[k];
       if(k == on)
         return;
       // a corner's two sides: near the corner a wedge that no cell size resolves (the corner
       // quad of paper §5 fills it); farther out, an acute corner's sides face each other
       // across a narrowing gap like any channel's (a needle)
-      if(adjacent(s, here)) {
-        const P& v = (s.a == here.a || s.a == here.b) ? s.a : s.b;
-        if(!needle_corner(s, here) || std::hypot(q[0] - v[0], q[1] - v[1]) < corner_zone * (std::min)(s.length, here.length))
+      if(consecutive(s, here)) {
+        const Segment& leaving = leaving_the_corner(s, here);
+        if(!leaving.needle_at_source ||
+           std::sqrt(CGAL::squared_distance(q, leaving.segment.source())) < corner_zone * (std::min)(s.length, here.length))
           return;
       }
       double t;
-      const P c = closest(s, q, t);
-      const double d = std::hypot(c[0] - q[0], c[1] - q[1]);
+      const P c = closest(s.segment, q, t);
+      const double d = std::sqrt(CGAL::squared_distance(c, q));
       if(!(d > 0) || d > reach || d >= best)
         return;
       if(s.loop == here.loop) {
@@ -137,18 +143,27 @@ private:
     return best;
   }
 
-  static bool adjacent(const Segment& s, const Segment& r)
+  // Loops share no vertex, and each vertex is the target of one of its loop's segments and
+  // the source of the next.
+  static bool consecutive(const Segment& s, const Segment& r)
   {
-    return s.a == r.a || s.a == r.b || s.b == r.a || s.b == r.b;
+    return s.target_vertex == r.source_vertex || r.target_vertex == s.source_vertex;
   }
 
-  static P closest(const Segment& s, const P& q, double& t)
+  // of two consecutive segments, the one whose source is their shared vertex
+  static const Segment& leaving_the_corner(const Segment& s, const Segment& r)
   {
-    const double dx = s.b[0] - s.a[0], dy = s.b[1] - s.a[1];
-    const double l2 = dx * dx + dy * dy;
-    t = l2 > 0 ? ((q[0] - s.a[0]) * dx + (q[1] - s.a[1]) * dy) / l2 : 0;
+    return s.target_vertex == r.source_vertex ? r : s;
+  }
+
+  // the point of s nearest to q, a share t of the way from its source to its target
+  static P closest(const S& s, const P& q, double& t)
+  {
+    const V d = s.to_vector();
+    const double l2 = d.squared_length();
+    t = l2 > 0 ? CGAL::scalar_product(q - s.source(), d) / l2 : 0;
     t = (std::min)((std::max)(t, 0.0), 1.0);
-    return { s.a[0] + t * dx, s.a[1] + t * dy };
+    return s.source() + t * d;
   }
 
   static std::vector<Bbox_2> boxes(const std::vector<Segment>& segments)
@@ -156,8 +171,7 @@ private:
     std::vector<Bbox_2> result;
     result.reserve(segments.size());
     for(const Segment& s : segments)
-      result.emplace_back((std::min)(s.a[0], s.b[0]), (std::min)(s.a[1], s.b[1]),
-                          (std::max)(s.a[0], s.b[0]), (std::max)(s.a[1], s.b[1]));
+      result.push_back(s.segment.bbox());
     return result;
   }
 
@@ -167,6 +181,38 @@ private:
   std::vector<Bbox_2> m_boxes; // before m_tree, which keeps a reference to it
   Box_tree m_tree;             // the box tree the loop validation uses
 };
+
+// The domain's boundary as the gap finder's segments, loop after loop, and each loop's length.
+template <class K>
+std::vector<Boundary_gap_finder::Segment> gap_finder_segments(const Domain_2<K>& domain, const Domain_loops_2<K>& loops,
+                                                              const K& traits, std::vector<double>& loop_lengths)
+{
+  typedef Boundary_gap_finder::P P;
+  auto x_of = traits.compute_x_2_object();
+  auto y_of = traits.compute_y_2_object();
+  auto orientation = traits.orientation_2_object();
+  auto xy = [&](std::size_t v) {
+    return P(CGAL::to_double(x_of(domain.points[v])), CGAL::to_double(y_of(domain.points[v])));
+  };
+  std::vector<Boundary_gap_finder::Segment> segments;
+  for(std::size_t l = 0; l < loops.loops.size(); ++l) {
+    const auto& vs = loops.loops[l].vertices;
+    const std::size_t n = vs.size();
+    double arc = 0;
+    for(std::size_t k = 0; k < n; ++k) {
+      const std::size_t before = vs[(k + n - 1) % n], source = vs[k], target = vs[(k + 1) % n];
+      const Boundary_gap_finder::S segment(xy(source), xy(target));
+      const double length = std::sqrt(segment.squared_length());
+      // convex with the domain on the left: decided on the input points, exactly
+      const bool convex = orientation(domain.points[before], domain.points[source], domain.points[target]) == LEFT_TURN;
+      const bool needle = convex && Boundary_gap_finder::sharper_than_needle(xy(before), segment.source(), segment.target());
+      segments.push_back({ segment, source, target, l, arc, length, needle });
+      arc += length;
+    }
+    loop_lengths.push_back(arc);
+  }
+  return segments;
+}
 
 // Size samples for every narrow region of the domain: see above. Each segment is sampled
 // densely enough that no stretch of a narrow channel goes without samples, but never in steps
@@ -184,28 +230,12 @@ std::vector<Size_sample> narrow_region_samples(const Domain_2<K>& domain, const 
                                                const K& traits = K())
 {
   typedef Boundary_gap_finder::P P;
-  auto x_of = traits.compute_x_2_object();
-  auto y_of = traits.compute_y_2_object();
-  auto xy = [&](std::size_t v) {
-    return P{ { CGAL::to_double(x_of(domain.points[v])), CGAL::to_double(y_of(domain.points[v])) } };
-  };
-  std::vector<Boundary_gap_finder::Segment> segments;
   std::vector<double> loop_lengths;
-  for(std::size_t l = 0; l < loops.loops.size(); ++l) {
-    const auto& vs = loops.loops[l].vertices;
-    double arc = 0;
-    for(std::size_t k = 0; k < vs.size(); ++k) {
-      P a = xy(vs[k]), b = xy(vs[(k + 1) % vs.size()]);
-      const double len = std::hypot(b[0] - a[0], b[1] - a[1]);
-      segments.push_back({ a, b, l, arc, len });
-      arc += len;
-    }
-    loop_lengths.push_back(arc);
-  }
+  std::vector<Boundary_gap_finder::Segment> segments = gap_finder_segments(domain, loops, traits, loop_lengths);
   std::vector<Size_sample> samples;
   if(segments.empty())
     return samples;
-  Boundary_gap_finder finder(segments, loop_lengths);
+  const Boundary_gap_finder finder(std::move(segments), std::move(loop_lengths));
   // Gaps wider than this many times the local segment length leave the cells to the point
   // spacing: they cannot make a region narrow.
   const double reach_factor = 4;
@@ -219,26 +249,17 @@ std::vector<Size_sample> narrow_region_samples(const Domain_2<K>& domain, const 
     const double size = w / 4;
     samples.push_back({ q, size });
     samples.push_back({ r, size });
-    samples.push_back({ P{ { (q[0] + r[0]) / 2, (q[1] + r[1]) / 2 } }, size });
+    samples.push_back({ CGAL::midpoint(q, r), size });
     return w;
   };
-  std::vector<std::size_t> loop_first; // index of each loop's first segment
-  for(std::size_t k = 0; k < segments.size(); ++k)
-    if(k == 0 || segments[k].loop != segments[k - 1].loop) loop_first.push_back(k);
-  loop_first.push_back(segments.size());
   for(std::size_t k = 0; k < finder.segments().size(); ++k) {
     const auto& s = finder.segments()[k];
-    const std::size_t first = loop_first[s.loop], next_first = loop_first[s.loop + 1];
-    const std::size_t prev = k == first ? next_first - 1 : k - 1;
-    // a needle's sides have no gap in reach within the corner zone: the walk steps past it
-    const bool after_needle = prev != k && Boundary_gap_finder::needle_corner(finder.segments()[prev], s);
     // walk along the segment in steps of a third of the gap just found, so that a channel
     // is sampled all along however its width varies
     double last_gap = HUGE_VAL; // the next sample's gap is about the same: search near it first
     for(double t = 0; t < s.length;) {
       const double u = t / s.length;
-      const double w = add(P{ { s.a[0] + u * (s.b[0] - s.a[0]), s.a[1] + u * (s.b[1] - s.a[1]) } }, k,
-                           s.arc_a + t, 2 * last_gap);
+      const double w = add(s.segment.source() + u * s.segment.to_vector(), k, s.arc_a + t, 2 * last_gap);
       last_gap = w;
       // a gap needing cells finer than the quadtree makes: the caller's depth error names it
       // now (walking on at the finest step ran into the cell budget, a misleading error)
@@ -247,15 +268,16 @@ std::vector<Size_sample> narrow_region_samples(const Domain_2<K>& domain, const 
       if(samples.size() > 2 * max_cells) {
         std::ostringstream msg;
         msg << "the narrow regions need more than " << max_cells << " quadtree cells (the cell budget): the gap near ("
-            << samples.back().point[0] << ", " << samples.back().point[1] << ") is " << w
+            << samples.back().point.x() << ", " << samples.back().point.y() << ") is " << w
             << " wide; coarsen the input there or raise the cell budget";
         throw Meshing_error(msg.str());
       }
       // no gap here: near a corner the far side still counts as its neighbour along the loop
-      // (a thin rectangle's long sides, seen from its corners), so look again farther on
+      // (a thin rectangle's long sides, seen from its corners), so look again farther on; a
+      // needle's sides have no gap in reach within the corner zone: the walk steps past it
       t += std::isfinite(w)                ? (std::max)(w / 3, finest_side)
-           : after_needle && t == 0 ? Boundary_gap_finder::corner_zone * s.length
-                                    : s.length / no_gap_samples;
+           : s.needle_at_source && t == 0 ? Boundary_gap_finder::corner_zone * s.length
+                                          : s.length / no_gap_samples;
     }
   }
   return samples;
