@@ -2014,4 +2014,36 @@ TEST(Buffer_layers, bird_has_no_round_with_inverted_quads)
   }
 }
 
+
+// The optimiser's fold decision: the corners at a vertex, as wedges, must wind once around it.
+// Decided exactly on the doubles, it holds far from the origin on small cells, where an angle
+// sum is off by more than a fixed tolerance: a point sliding on an edge at (4e7, 3.5e6) and
+// its two neighbours are collinear only up to their rounding.
+TEST(Buffer_layers_helpers, corners_fold_only_when_they_wind_twice)
+{
+  using QM::internal::times_wedges_cover;
+  typedef std::vector<std::pair<P2d, P2d>> Wedges;
+  const P2d E{1, 0}, N{0, 1}, W{-1, 0}, S{0, -1};
+  const Wedges ring{ { E, N }, { N, W }, { W, S }, { S, E } }; // four quads' corners, ccw
+  EXPECT_EQ(times_wedges_cover(P2d{0, 0}, ring), 1u);
+  EXPECT_EQ(times_wedges_cover(P2d{0.4, 0.3}, ring), 1u); // off centre, inside its ring
+  EXPECT_EQ(times_wedges_cover(P2d{2, 0}, ring), 2u);     // pulled out of its ring: folded
+  EXPECT_EQ(times_wedges_cover(P2d{0, 0}, Wedges{ { E, N }, { N, S }, { S, E } }), 1u); // a flat corner
+  EXPECT_EQ(times_wedges_cover(P2d{0, 0}, Wedges{ { E, N }, { N, E } }), 1u); // two quads, one reflex
+  EXPECT_EQ(times_wedges_cover(P2d{0, 0}, Wedges{ { N, N }, { E, N }, { N, W }, { W, S }, { S, E } }), 1u);
+
+  // v sliding between A and B (the domain on their left), its quads' corners from B to C and
+  // from C to A, and the outside's corner from A back to B
+  const double X = 40378712.34567, Y = 3552170.98765, h = 0.0371;
+  const P2d A{X, Y}, B{X + 3 * h, Y + 2 * h};
+  const P2d v = QM::internal::along_2d(A, B, 0.37);
+  const P2d C = v + QM::internal::Vector_2d(-2 * h, 3 * h);
+  EXPECT_EQ(times_wedges_cover(v, Wedges{ { B, C }, { C, A }, { A, B } }), 1u);
+  const double sum = QM::internal::corner_angle_degrees(C, v, B) + QM::internal::corner_angle_degrees(A, v, C);
+  EXPECT_GT(std::abs(sum - 180.0), 1e-6) << "an angle-sum test with tolerance 1e-6 would call this a fold";
+  // the same corners folded over: C on the outside
+  const P2d C_out = v + QM::internal::Vector_2d(2 * h, -3 * h);
+  EXPECT_EQ(times_wedges_cover(v, Wedges{ { B, C_out }, { C_out, A }, { A, B } }), 2u);
+}
+
 } // namespace qm2_buffer_tests

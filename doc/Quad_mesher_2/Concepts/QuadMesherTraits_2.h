@@ -29,10 +29,14 @@ traits (every `..._object()` in `include/`):
   `Compare_squared_distance_2` (whether a moved core boundary edge keeps its clearance from
   the boundary).
 
-The narrow-region sizing (`internal/narrow_regions.h`) needs only the coordinates and
-`Construct_point_2`: it works in `double`. A test (`test/test_traits_and_headers.cpp`)
-compiles and runs the mesher through every stage with an archetype that provides nothing
-else.
+The searches themselves (projections onto the boundary, bisectors, the optimiser's moves and
+its fold test) work on doubles through a fixed kernel, `CGAL::Epick`
+(`internal/approximate_kernel.h`): its constructions round, its predicates are exact on the
+doubles the moved points will have, whatever `FT` is. The narrow-region sizing
+(`internal/narrow_regions.h`) measures gaps on that kernel too, and decides which corners are
+convex with the traits' `Orientation_2` on the input points. A test
+(`test/test_traits_and_headers.cpp`) compiles and runs the mesher through every stage with an
+archetype that provides nothing else.
 
 The number type `FT` must be constructible from `double`, comparable with `operator<`,
 support `+`, `-` and `*` (the points stage moves vertices by \f$ x + f (p_x - w_x)\f$), and be

@@ -16,11 +16,33 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Quad_mesher_2 {
 namespace internal {
+
+/// How many times wedges at `centre` cover the direction to the end of the first one. Each
+/// wedge is swept counter-clockwise from its `first` point to its `second`, its start
+/// excluded and its end included; a wedge whose two points lie in one direction from
+/// `centre` (a corner of angle zero) covers nothing. A closed chain of wedges covers every
+/// direction as many times as it winds around `centre`: once if its corners do not fold.
+/// Decided exactly on the given doubles (the approximate kernel's predicates); no point may
+/// be at `centre`.
+inline std::size_t times_wedges_cover(const Point_2d& centre, const std::vector<std::pair<Point_2d, Point_2d>>& wedges)
+{
+  typedef Approximate_kernel::Direction_2 Direction;
+  const auto in_between = Approximate_kernel().counterclockwise_in_between_2_object();
+  const Direction reference(wedges.front().second - centre);
+  std::size_t covered = 0;
+  for(const auto& w : wedges) {
+    const Direction from(w.first - centre), to(w.second - centre);
+    if(from == to) continue;
+    if(reference == to || in_between(reference, from, to)) ++covered;
+  }
+  return covered;
+}
 
 /// The optimisation of one buffer zone (see the file comment).
 template <class K>
@@ -129,19 +151,57 @@ private:
     return r;
   }
 
-  // whether the quads at v fold over each other: their angles at v do not sum to 360 degrees
-  // (180 at a point sliding on the boundary; the core's boundary vertices are not checked)
+  // Whether the quads at v fold over each other, decided exactly on the working positions:
+  // their corners at v must cover the plane around it once (see times_wedges_cover()). A
+  // point sliding on the boundary adds the outside's corner between its two neighbours on
+  // the edge; the core's boundary vertices are not checked. A zero-length edge is a fold.
   bool folded_at(std::size_t v) const
   {
-    const double expected = m_zone.slides.count(v) ? 180.0 : (m_zone.is_core_boundary(v) ? -1 : 360.0);
-    if(expected < 0) return false;
-    double angle_sum = 0;
+    if(m_zone.is_core_boundary(v) && !m_zone.slides.count(v)) return false;
+    std::vector<std::pair<std::size_t, std::size_t>>& wedges = m_wedges; // (from, to) vertices
+    wedges.clear();
     for(std::size_t q : m_quads_at[v]) {
       const Quad& Q = m_zone.mesh.quads[q];
       const int c = corner_of(Q, v);
-      angle_sum += corner_angle_degrees(m_zone.xy[Q[(c + 3) % 4]], m_zone.xy[v], m_zone.xy[Q[(c + 1) % 4]]);
+      wedges.emplace_back(Q[(c + 1) % 4], Q[(c + 3) % 4]);
     }
-    return std::abs(angle_sum - expected) > 1e-6;
+    if(wedges.empty()) return true;
+    auto it = m_zone.slides.find(v);
+    if(it != m_zone.slides.end() && !add_outside_wedge(v, it->second.neighbors, wedges)) return true;
+    std::vector<std::pair<Point_2d, Point_2d>>& corners = m_wedge_points;
+    corners.clear();
+    for(const auto& w : wedges) {
+      if(m_zone.xy[w.first] == m_zone.xy[v] || m_zone.xy[w.second] == m_zone.xy[v]) return true;
+      corners.emplace_back(m_zone.xy[w.first], m_zone.xy[w.second]);
+    }
+    return times_wedges_cover(m_zone.xy[v], corners) != 1;
+  }
+
+  // The outside's corner at a sliding point v: from the neighbour that ends its quads' chain
+  // of corners to the one that starts it. False if its quads do not make one such chain or v
+  // does not lie between its neighbours (one is missing or at v, or they make no obtuse
+  // angle at v: on its edge they make a straight one).
+  bool add_outside_wedge(std::size_t v, const std::array<std::size_t, 2>& neighbors,
+                         std::vector<std::pair<std::size_t, std::size_t>>& wedges) const
+  {
+    for(std::size_t u : neighbors)
+      if(u == none || m_zone.xy[u] == m_zone.xy[v]) return false;
+    const auto angle = Approximate_kernel().angle_2_object();
+    if(angle(m_zone.xy[neighbors[0]], m_zone.xy[v], m_zone.xy[neighbors[1]]) != OBTUSE) return false;
+    auto starts = [&](std::size_t u) {
+      return std::count_if(wedges.begin(), wedges.end(), [u](const auto& w) { return w.first == u; });
+    };
+    auto ends = [&](std::size_t u) {
+      return std::count_if(wedges.begin(), wedges.end(), [u](const auto& w) { return w.second == u; });
+    };
+    for(int k = 0; k < 2; ++k) {
+      const std::size_t first = neighbors[k], last = neighbors[1 - k];
+      if(starts(first) == 1 && ends(first) == 0 && ends(last) == 1 && starts(last) == 0) {
+        wedges.emplace_back(last, first);
+        return true;
+      }
+    }
+    return false;
   }
 
   // Up to `passes` passes over `vertices`, each moving every dirty one to its best target. A
@@ -339,6 +399,8 @@ private:
   const double m_min_edge2; // the square of min_edge_length()
   std::vector<char> m_dirty, m_dirty_next; // per point: to try in this pass, in the next
   std::vector<Point_2d> m_targets;         // try_move()'s, kept for their memory
+  mutable std::vector<std::pair<std::size_t, std::size_t>> m_wedges;  // folded_at()'s, likewise
+  mutable std::vector<std::pair<Point_2d, Point_2d>> m_wedge_points; // likewise
 };
 
 } // namespace internal

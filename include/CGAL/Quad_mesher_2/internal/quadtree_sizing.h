@@ -241,12 +241,12 @@ public:
       const int level = level_for_size(m_tree, s.size);
       if(level > m_tree.max_depth()) {
         std::ostringstream msg;
-        msg << "a narrow region of width " << 4 * s.size << " near (" << s.point[0] << ", "
-            << s.point[1] << ") needs quadtree depth " << level << ", beyond "
+        msg << "a narrow region of width " << 4 * s.size << " near (" << s.point.x() << ", "
+            << s.point.y() << ") needs quadtree depth " << level << ", beyond "
             << m_tree.depth_limit();
         throw Meshing_error(msg.str());
       }
-      const Point_2 p = make_point(s.point[0], s.point[1]);
+      const Point_2 p = make_point(s.point.x(), s.point.y());
       if(level > 0 && m_tree.contains(p))
         m_tree.refine_at(p, level);
     }
@@ -260,20 +260,16 @@ public:
   void refine_boundary_band()
   {
     auto make_point = m_traits.construct_point_2_object();
-    auto x_of = m_traits.compute_x_2_object();
-    auto y_of = m_traits.compute_y_2_object();
-    std::vector<std::pair<std::array<double, 2>, int>> targets;
+    std::vector<std::pair<Point_2d, int>> targets;
     for(const auto& loop : m_loops.loops) {
       const std::size_t n = loop.vertices.size();
       for(std::size_t k = 0; k < n; ++k) {
-        const Point_2& a = m_domain.points[loop.vertices[k]];
-        const Point_2& b = m_domain.points[loop.vertices[(k + 1) % n]];
-        const double ax = CGAL::to_double(x_of(a)), ay = CGAL::to_double(y_of(a));
-        const double dx = CGAL::to_double(x_of(b)) - ax, dy = CGAL::to_double(y_of(b)) - ay;
-        const double length = std::hypot(dx, dy);
+        const Point_2d a = to_point_2d(m_domain.points[loop.vertices[k]]);
+        const Vector_2d d = to_point_2d(m_domain.points[loop.vertices[(k + 1) % n]]) - a;
+        const double length = length_2d(d);
         for(double t = 0; t < 1;) {
-          const std::array<double, 2> q{ { ax + t * dx, ay + t * dy } };
-          const int level = m_tree.locate(make_point(q[0], q[1])).level;
+          const Point_2d q = a + t * d;
+          const int level = m_tree.locate(make_point(q.x(), q.y())).level;
           targets.push_back({ q, level });
           t += m_tree.cell_side(level) / (2 * length);
         }
@@ -283,7 +279,7 @@ public:
       const double h = m_tree.cell_side(target.second);
       for(int i = -boundary_band; i <= boundary_band; ++i)
         for(int j = -boundary_band; j <= boundary_band; ++j) {
-          const Point_2 p = make_point(target.first[0] + i * h, target.first[1] + j * h);
+          const Point_2 p = make_point(target.first.x() + i * h, target.first.y() + j * h);
           if(m_tree.contains(p) && m_tree.locate(p).level < target.second)
             m_tree.refine_at(p, target.second);
         }
