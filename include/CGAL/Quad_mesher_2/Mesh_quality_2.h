@@ -276,7 +276,7 @@ std::size_t count_hanging_nodes(const std::vector<Point_2d>& pts,
     const Point_2d& a = pts[src(e)];
     const Vector_2d d = pts[tgt(e)] - a;
     const Vector_2d ap = pts[v] - a;
-    const double len2 = CGAL::scalar_product(d, d);
+    const double len2 = d.squared_length();
     const double cr = CGAL::determinant(d, ap);
     if(cr * cr > tol * tol * len2) // farther than tol from the line: the common case
       return;

@@ -143,7 +143,7 @@ private:
       // whole-mesh check rejects vertices within 1e-9 of the diagonal
       for(int side : { 1, 3 }) {
         const Vector_2d d = m_zone.xy[Q[(c + side) % 4]] - m_zone.xy[v];
-        if(CGAL::scalar_product(d, d) <= m_min_edge2) ++r.invalid;
+        if(d.squared_length() <= m_min_edge2) ++r.invalid;
       }
       if(bound != nullptr && !(r < *bound)) return r;
     }
@@ -362,7 +362,7 @@ private:
         const Point_2& b = m_zone.domain.points[lv[(it->second.edge + 1) % lv.size()]];
         const Point_2d A = to_point_2d(a), B = to_point_2d(b);
         const Vector_2d ab = B - A;
-        const double t = CGAL::scalar_product(m_zone.xy[v] - A, ab) / CGAL::scalar_product(ab, ab);
+        const double t = CGAL::scalar_product(m_zone.xy[v] - A, ab) / ab.squared_length();
         m_zone.mesh.points[v] = m_zone.point_between(a, b, t);
         m_zone.xy[v] = to_point_2d(m_zone.mesh.points[v]);
       }
@@ -379,7 +379,7 @@ private:
     if(a == none || b == none) return false;
     const Point_2d A = m_zone.xy[a], B = m_zone.xy[b];
     const Vector_2d ab = B - A;
-    const double len2 = CGAL::scalar_product(ab, ab);
+    const double len2 = ab.squared_length();
     if(!(len2 > 0)) return false;
     const double t = (std::min)(0.9, (std::max)(0.1, CGAL::scalar_product(p - A, ab) / len2));
     // the neighbours must lie on this point's edge (or be its ends) for the chain to stay on it

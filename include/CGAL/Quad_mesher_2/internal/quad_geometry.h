@@ -157,7 +157,7 @@ inline double quad_aspect_ratio(const std::array<Point_2d, 4>& q)
 inline double nearest_segment_parameter(const Point_2d& p, const Point_2d& a, const Point_2d& b)
 {
   const Vector_2d ab = b - a;
-  const double len2 = CGAL::scalar_product(ab, ab);
+  const double len2 = ab.squared_length();
   const double t = len2 > 0 ? CGAL::scalar_product(p - a, ab) / len2 : 0.0;
   return (std::min)(1.0, (std::max)(0.0, t));
 }
