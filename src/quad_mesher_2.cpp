@@ -412,6 +412,8 @@ int run(const Options& opt)
     std::cerr << "quad-mesher: the mesh failed its validity check (see the report)\n";
     return 3;
   }
+  if(last == QM::Stage::BUFFER2 && mesher.buffer_report().bad_angle_quads > 0)
+    return 4; // add_buffer() warned with the count and why the rounds ended
   return 0;
 }
 

@@ -29,7 +29,7 @@ foreach(stage IN LISTS STAGES)
   execute_process(
     COMMAND "${CLI}" "${INPUT}" --kernel ${KERNEL} --stop-after ${stage} ${OPTIONS} -o "${mesh}"
     RESULT_VARIABLE status OUTPUT_QUIET ERROR_VARIABLE errors)
-  if(NOT status EQUAL 0)
+  if(NOT status EQUAL 0 AND NOT status EQUAL 4) # 4: written, with unforced angles out
     list(APPEND failures "${stage}: quad-mesher exited ${status}: ${errors}")
     continue()
   endif()
