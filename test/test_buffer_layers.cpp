@@ -2030,7 +2030,10 @@ TEST(Buffer_layers_helpers, corners_fold_only_when_they_wind_twice)
   EXPECT_EQ(times_wedges_cover(P2d{2, 0}, ring), 2u);     // pulled out of its ring: folded
   EXPECT_EQ(times_wedges_cover(P2d{0, 0}, Wedges{ { E, N }, { N, S }, { S, E } }), 1u); // a flat corner
   EXPECT_EQ(times_wedges_cover(P2d{0, 0}, Wedges{ { E, N }, { N, E } }), 1u); // two quads, one reflex
+  // a corner of angle zero leaves the doubles no certain side: the exact count
   EXPECT_EQ(times_wedges_cover(P2d{0, 0}, Wedges{ { N, N }, { E, N }, { N, W }, { W, S }, { S, E } }), 1u);
+  EXPECT_EQ(times_wedges_cover(P2d{0, 0}, Wedges{ { E, N }, { N, E }, { W, W } }), 1u);
+  EXPECT_EQ(times_wedges_cover(P2d{2, 0}, Wedges{ { E, N }, { N, W }, { W, S }, { S, E }, { N, N } }), 2u);
 
   // v sliding between A and B (the domain on their left), its quads' corners from B to C and
   // from C to A, and the outside's corner from A back to B

@@ -23,23 +23,58 @@ namespace CGAL {
 namespace Quad_mesher_2 {
 namespace internal {
 
-/// How many times wedges at `centre` cover the direction to the end of the first one. Each
-/// wedge is swept counter-clockwise from its `first` point to its `second`, its start
-/// excluded and its end included; a wedge whose two points lie in one direction from
-/// `centre` (a corner of angle zero) covers nothing. A closed chain of wedges covers every
-/// direction as many times as it winds around `centre`: once if its corners do not fold.
-/// Decided exactly on the given doubles (the approximate kernel's predicates); no point may
-/// be at `centre`.
+/// Whether the directions from `c` to `a` and to `b` are the same, exactly.
+inline bool same_direction(const Point_2d& c, const Point_2d& a, const Point_2d& b)
+{
+  const Approximate_kernel kernel;
+  return kernel.orientation_2_object()(c, a, b) == COLLINEAR && kernel.angle_2_object()(a, c, b) == ACUTE;
+}
+
+/// Whether the direction from `c` to `r` lies strictly inside the wedge swept
+/// counter-clockwise from the direction to `f` to the direction to `t` (not the same).
+/// Exact: orientations and angle signs of the points (the approximate kernel's predicates).
+inline bool strictly_between(const Point_2d& c, const Point_2d& r, const Point_2d& f, const Point_2d& t)
+{
+  const auto orientation = Approximate_kernel().orientation_2_object();
+  const Orientation wedge = orientation(c, f, t);
+  if(wedge == LEFT_TURN) // under 180 degrees: the intersection of two half-planes
+    return orientation(c, f, r) == LEFT_TURN && orientation(c, r, t) == LEFT_TURN;
+  if(wedge == COLLINEAR) // 180 degrees: the half-plane on the left of f
+    return orientation(c, f, r) == LEFT_TURN;
+  // over 180: outside the closed wedge from t to f
+  return !((orientation(c, t, r) == LEFT_TURN && orientation(c, r, f) == LEFT_TURN) || same_direction(c, r, t)
+           || same_direction(c, r, f));
+}
+
+/// How many times a closed chain of wedges at `centre` winds around it: once if its corners
+/// do not fold. Each wedge is swept counter-clockwise from the direction to its `first` point
+/// to the direction to its `second`; a wedge whose two points lie in one direction from
+/// `centre` (a corner of angle zero) adds nothing. No point may be at `centre`.
+/// Its angles in doubles decide when every wedge's side of 180 degrees is certain (the
+/// common case: the sum is then within rounding of 360 times the winding); else the exact
+/// count: how many wedges cover the direction to the end of the first, each from its start
+/// (excluded) to its end (included), which a closed chain does as often as it winds.
 inline std::size_t times_wedges_cover(const Point_2d& centre, const std::vector<std::pair<Point_2d, Point_2d>>& wedges)
 {
-  typedef Approximate_kernel::Direction_2 Direction;
-  const auto in_between = Approximate_kernel().counterclockwise_in_between_2_object();
-  const Direction reference(wedges.front().second - centre);
+  double sum = 0;
+  bool certain = true;
+  for(const auto& w : wedges) {
+    const Vector_2d u = w.first - centre, v = w.second - centre;
+    const double cross = CGAL::determinant(u, v);
+    // the sign of a cross product this far from zero survives the rounding of u, v and it
+    if(!(cross * cross > 1e-24 * u.squared_length() * v.squared_length())) {
+      certain = false;
+      break;
+    }
+    sum += angle_degrees(cross, CGAL::scalar_product(u, v));
+  }
+  if(certain) return std::size_t(std::lround(sum / 360.0));
+  const Point_2d& reference = wedges.front().second;
   std::size_t covered = 0;
   for(const auto& w : wedges) {
-    const Direction from(w.first - centre), to(w.second - centre);
-    if(from == to) continue;
-    if(reference == to || in_between(reference, from, to)) ++covered;
+    if(same_direction(centre, w.first, w.second)) continue; // a corner of angle zero
+    if(same_direction(centre, reference, w.second) || strictly_between(centre, reference, w.first, w.second))
+      ++covered;
   }
   return covered;
 }
@@ -154,7 +189,8 @@ private:
   // Whether the quads at v fold over each other, decided exactly on the working positions:
   // their corners at v must cover the plane around it once (see times_wedges_cover()). A
   // point sliding on the boundary adds the outside's corner between its two neighbours on
-  // the edge; the core's boundary vertices are not checked. A zero-length edge is a fold.
+  // the edge; the core's boundary vertices are not checked. A zero-length edge, or corners
+  // that make no closed chain, are a fold.
   bool folded_at(std::size_t v) const
   {
     if(m_zone.is_core_boundary(v) && !m_zone.slides.count(v)) return false;
@@ -168,6 +204,7 @@ private:
     if(wedges.empty()) return true;
     auto it = m_zone.slides.find(v);
     if(it != m_zone.slides.end() && !add_outside_wedge(v, it->second.neighbors, wedges)) return true;
+    if(!closed_chain(wedges)) return true;
     std::vector<std::pair<Point_2d, Point_2d>>& corners = m_wedge_points;
     corners.clear();
     for(const auto& w : wedges) {
@@ -175,6 +212,17 @@ private:
       corners.emplace_back(m_zone.xy[w.first], m_zone.xy[w.second]);
     }
     return times_wedges_cover(m_zone.xy[v], corners) != 1;
+  }
+
+  // whether each vertex starts as many of the wedges as it ends: they make closed chains
+  static bool closed_chain(const std::vector<std::pair<std::size_t, std::size_t>>& wedges)
+  {
+    for(const auto& w : wedges) {
+      const auto starts = std::count_if(wedges.begin(), wedges.end(), [&](const auto& x) { return x.first == w.first; });
+      const auto ends = std::count_if(wedges.begin(), wedges.end(), [&](const auto& x) { return x.second == w.first; });
+      if(starts != ends) return false;
+    }
+    return true;
   }
 
   // The outside's corner at a sliding point v: from the neighbour that ends its quads' chain
