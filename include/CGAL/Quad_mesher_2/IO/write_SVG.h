@@ -64,6 +64,154 @@ inline std::string svg_colour(int c)
   return std::string(buf);
 }
 
+typedef Quad_mesher_2::internal::Point_2d Svg_point;
+typedef std::array<Svg_point, 2> Svg_segment;
+
+/// Where the picture's points go: x to the right and y up from the bounding box of the
+/// quads' vertices and the segments, its larger side scaled to 1000 units.
+struct Svg_frame
+{
+  double xmin = 0, ymin = 0, xmax = 0, ymax = 0, scale = 1;
+
+  template <class Quad>
+  Svg_frame(const std::vector<Svg_point>& pts, const std::vector<Quad>& quads, const std::vector<Svg_segment>& segs)
+  {
+    bool empty = true;
+    auto add = [&](const Svg_point& p) {
+      if(empty) {
+        xmin = xmax = p.x();
+        ymin = ymax = p.y();
+        empty = false;
+      } else {
+        xmin = (std::min)(xmin, p.x());
+        xmax = (std::max)(xmax, p.x());
+        ymin = (std::min)(ymin, p.y());
+        ymax = (std::max)(ymax, p.y());
+      }
+    };
+    for(const auto& q : quads)
+      for(std::size_t v : q) add(pts[v]);
+    for(const auto& seg : segs) {
+      add(seg[0]);
+      add(seg[1]);
+    }
+    const double extent = (std::max)(xmax - xmin, ymax - ymin);
+    scale = extent > 0 ? 1000.0 / extent : 1.0;
+  }
+
+  double X(const Svg_point& p) const { return (p.x() - xmin) * scale; }
+  double Y(const Svg_point& p) const { return (ymax - p.y()) * scale; }
+  double width() const { return (xmax - xmin) * scale; }
+  double height() const { return (ymax - ymin) * scale; }
+};
+
+/// The edges' stroke width: a twentieth of the mean edge length, within [1e-3, 2].
+template <class Quad>
+double svg_stroke_width(const std::vector<Svg_point>& pts, const std::vector<Quad>& quads, double scale)
+{
+  double sum_len = 0;
+  std::size_t n_len = 0;
+  for(const auto& q : quads)
+    for(int k = 0; k < 4; ++k) {
+      sum_len += Quad_mesher_2::internal::length_2d(pts[q[(k + 1) % 4]] - pts[q[k]]);
+      ++n_len;
+    }
+  const double stroke = n_len > 0 ? 0.05 * sum_len * scale / double(n_len) : 1.0;
+  return (std::min)(2.0, (std::max)(1e-3, stroke));
+}
+
+/// The quads' indices grouped by their colour class.
+template <class Quad>
+std::vector<std::vector<std::size_t>> svg_quads_by_class(const std::vector<Svg_point>& pts, const std::vector<Quad>& quads)
+{
+  std::vector<std::vector<std::size_t>> by_class(svg_bad_class + 1);
+  for(std::size_t i = 0; i < quads.size(); ++i) {
+    const auto& q = quads[i];
+    const std::array<Svg_point, 4> g = { pts[q[0]], pts[q[1]], pts[q[2]], pts[q[3]] };
+    by_class[svg_colour_class(Quad_mesher_2::internal::quad_max_angle_deviation(g))].push_back(i);
+  }
+  return by_class;
+}
+
+/// The margin around the picture (the legend is below it, within the margin's width).
+constexpr double svg_margin = 20;
+
+/// The classes the legend shows.
+constexpr std::array<int, 4> svg_legend_classes = { 0, 23, 45, svg_bad_class };
+
+/// The `<svg>` element's opening, its title and the style of every class drawn or in the legend.
+inline void write_svg_header(std::ostream& out, double width, double height, std::size_t quads, std::size_t points,
+                             const std::vector<std::vector<std::size_t>>& by_class)
+{
+  const double margin = svg_margin, legend_h = 60, legend_w = 760;
+  const double vb_w = (std::max)(width, legend_w) + 2 * margin;
+  const double vb_h = height + 2 * margin + legend_h;
+  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      << "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" << vb_w
+      << "\" height=\"" << vb_h << "\" viewBox=\"" << -margin << ' ' << -margin << ' ' << vb_w
+      << ' ' << vb_h << "\">\n"
+      << "<title>" << quads << " quads, " << points << " vertices</title>\n"
+      << "<style>";
+  for(int c = 0; c <= svg_bad_class; ++c)
+    if(!by_class[c].empty() || std::count(svg_legend_classes.begin(), svg_legend_classes.end(), c) > 0)
+      out << ".c" << c << "{fill:" << svg_colour(c) << "}";
+  out << "</style>\n";
+}
+
+/// One `<polygon>` a quad, in one group per colour class.
+template <class Quad>
+void write_svg_quads(std::ostream& out, const std::vector<Svg_point>& pts, const std::vector<Quad>& quads,
+                     const std::vector<std::vector<std::size_t>>& by_class, const Svg_frame& frame, double stroke)
+{
+  out << "<g stroke=\"#222222\" stroke-width=\"" << stroke << "\" stroke-linejoin=\"round\">\n";
+  Quad_mesher_2::internal::Text_buffer text(out, 6);
+  for(int c = 0; c <= svg_bad_class; ++c) {
+    if(by_class[c].empty())
+      continue;
+    text << "<g class=\"c" << c << "\">\n";
+    for(std::size_t i : by_class[c]) {
+      const auto& q = quads[i];
+      text << "<polygon points=\"";
+      for(int k = 0; k < 4; ++k)
+        text << (k ? " " : "") << frame.X(pts[q[k]]) << ',' << frame.Y(pts[q[k]]);
+      text << "\"/>\n";
+    }
+    text << "</g>\n";
+  }
+  text.flush();
+  out << "</g>\n";
+}
+
+/// The segments as one blue path, three strokes wide.
+inline void write_svg_segments(std::ostream& out, const std::vector<Svg_segment>& segs, const Svg_frame& frame,
+                               double stroke)
+{
+  if(segs.empty())
+    return;
+  out << "<path fill=\"none\" stroke=\"#1f5fd6\" stroke-width=\"" << 3 * stroke
+      << "\" stroke-linecap=\"round\" d=\"";
+  for(const auto& seg : segs)
+    out << 'M' << frame.X(seg[0]) << ',' << frame.Y(seg[0]) << 'L' << frame.X(seg[1]) << ',' << frame.Y(seg[1]);
+  out << "\"/>\n";
+}
+
+/// The colour legend, its top at `y`.
+inline void write_svg_legend(std::ostream& out, double y)
+{
+  const char* labels[] = { "90&#176;", "67.5&#176; / 112.5&#176;", "45&#176; / 135&#176;",
+                           "outside [45&#176;, 135&#176;]" };
+  out << "<g font-family=\"sans-serif\" font-size=\"16\" stroke=\"#222222\" stroke-width=\"0.5\">\n";
+  for(int i = 0; i < 4; ++i) {
+    const double lx = 190.0 * i;
+    out << "<rect class=\"c" << svg_legend_classes[i] << "\" x=\"" << lx << "\" y=\"" << y
+        << "\" width=\"20\" height=\"20\"/>"
+        << "<text stroke=\"none\" fill=\"#222222\" x=\"" << lx + 26 << "\" y=\"" << y + 16
+        << "\">" << labels[i] << "</text>\n";
+  }
+  out << "<text stroke=\"none\" fill=\"#222222\" x=\"0\" y=\"" << y + 44
+      << "\">colour: worst corner angle of each quad</text>\n</g>\n";
+}
+
 } // namespace internal
 
 /// \ingroup PkgQuadMesher2IO
@@ -81,125 +229,25 @@ template <class Point_2>
 bool write_SVG(std::ostream& os, const Quad_mesh_2<Point_2>& mesh,
                const std::vector<std::pair<Point_2, Point_2>>& segments)
 {
-  using Q_internal_point = Quad_mesher_2::internal::Point_2d;
   if(!Quad_mesher_2::internal::quad_indices_in_range(mesh))
     return false;
   return Quad_mesher_2::internal::guarded_write(os, [&](std::ostream& out) {
-    std::vector<Q_internal_point> pts;
+    std::vector<internal::Svg_point> pts;
     pts.reserve(mesh.points.size());
     for(const Point_2& p : mesh.points)
       pts.push_back(Quad_mesher_2::internal::to_point_2d(p));
-    std::vector<std::array<Q_internal_point, 2>> segs;
+    std::vector<internal::Svg_segment> segs;
     segs.reserve(segments.size());
-    for(const auto& s : segments)
-      segs.push_back({Quad_mesher_2::internal::to_point_2d(s.first),
-                      Quad_mesher_2::internal::to_point_2d(s.second)});
-
-    // Bounding box of the quads' vertices and the segments.
-    bool empty = true;
-    double xmin = 0, ymin = 0, xmax = 0, ymax = 0;
-    auto add = [&](const Q_internal_point& p) {
-      if(empty) {
-        xmin = xmax = p.x();
-        ymin = ymax = p.y();
-        empty = false;
-      } else {
-        xmin = (std::min)(xmin, p.x());
-        xmax = (std::max)(xmax, p.x());
-        ymin = (std::min)(ymin, p.y());
-        ymax = (std::max)(ymax, p.y());
-      }
-    };
-    for(const auto& q : mesh.quads)
-      for(std::size_t v : q)
-        add(pts[v]);
-    for(const auto& s : segs) {
-      add(s[0]);
-      add(s[1]);
-    }
-    const double extent = (std::max)(xmax - xmin, ymax - ymin);
-    const double scale = extent > 0 ? 1000.0 / extent : 1.0;
-    auto X = [&](const Q_internal_point& p) { return (p.x() - xmin) * scale; };
-    auto Y = [&](const Q_internal_point& p) { return (ymax - p.y()) * scale; };
-    const double width = (xmax - xmin) * scale, height = (ymax - ymin) * scale;
-
-    // Stroke width: a twentieth of the mean edge length.
-    double sum_len = 0;
-    std::size_t n_len = 0;
-    for(const auto& q : mesh.quads)
-      for(int k = 0; k < 4; ++k) {
-        sum_len += Quad_mesher_2::internal::length_2d(
-          (pts[q[(k + 1) % 4]] - pts[q[k]]));
-        ++n_len;
-      }
-    double stroke = n_len > 0 ? 0.05 * sum_len * scale / double(n_len) : 1.0;
-    stroke = (std::min)(2.0, (std::max)(1e-3, stroke));
-
-    // Colour class of every quad, and the quads grouped by class.
-    std::vector<std::vector<std::size_t>> by_class(internal::svg_bad_class + 1);
-    for(std::size_t i = 0; i < mesh.quads.size(); ++i) {
-      const auto& q = mesh.quads[i];
-      const std::array<Q_internal_point, 4> g = {pts[q[0]], pts[q[1]], pts[q[2]], pts[q[3]]};
-      by_class[internal::svg_colour_class(Quad_mesher_2::internal::quad_max_angle_deviation(g))]
-        .push_back(i);
-    }
-
-    const double margin = 20, legend_h = 60, legend_w = 760;
-    const double vb_w = (std::max)(width, legend_w) + 2 * margin;
-    const double vb_h = height + 2 * margin + legend_h;
+    for(const auto& seg : segments)
+      segs.push_back({ Quad_mesher_2::internal::to_point_2d(seg.first), Quad_mesher_2::internal::to_point_2d(seg.second) });
+    const internal::Svg_frame frame(pts, mesh.quads, segs);
+    const double stroke = internal::svg_stroke_width(pts, mesh.quads, frame.scale);
+    const auto by_class = internal::svg_quads_by_class(pts, mesh.quads);
     out << std::setprecision(6);
-    out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-        << "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" << vb_w
-        << "\" height=\"" << vb_h << "\" viewBox=\"" << -margin << ' ' << -margin << ' ' << vb_w
-        << ' ' << vb_h << "\">\n"
-        << "<title>" << mesh.quads.size() << " quads, " << mesh.points.size() << " vertices</title>\n"
-        << "<style>";
-    for(int c = 0; c <= internal::svg_bad_class; ++c)
-      if(!by_class[c].empty() || c == 0 || c == 23 || c == 45 || c == internal::svg_bad_class)
-        out << ".c" << c << "{fill:" << internal::svg_colour(c) << "}";
-    out << "</style>\n";
-
-    out << "<g stroke=\"#222222\" stroke-width=\"" << stroke << "\" stroke-linejoin=\"round\">\n";
-    Quad_mesher_2::internal::Text_buffer text(out, 6);
-    for(int c = 0; c <= internal::svg_bad_class; ++c) {
-      if(by_class[c].empty())
-        continue;
-      text << "<g class=\"c" << c << "\">\n";
-      for(std::size_t i : by_class[c]) {
-        const auto& q = mesh.quads[i];
-        text << "<polygon points=\"";
-        for(int k = 0; k < 4; ++k)
-          text << (k ? " " : "") << X(pts[q[k]]) << ',' << Y(pts[q[k]]);
-        text << "\"/>\n";
-      }
-      text << "</g>\n";
-    }
-    text.flush();
-    out << "</g>\n";
-
-    if(!segs.empty()) {
-      out << "<path fill=\"none\" stroke=\"#1f5fd6\" stroke-width=\"" << 3 * stroke
-          << "\" stroke-linecap=\"round\" d=\"";
-      for(const auto& s : segs)
-        out << 'M' << X(s[0]) << ',' << Y(s[0]) << 'L' << X(s[1]) << ',' << Y(s[1]);
-      out << "\"/>\n";
-    }
-
-    // Legend below the picture.
-    const double ly = height + margin;
-    const char* labels[] = {"90&#176;", "67.5&#176; / 112.5&#176;", "45&#176; / 135&#176;",
-                            "outside [45&#176;, 135&#176;]"};
-    const int classes[] = {0, 23, 45, internal::svg_bad_class};
-    out << "<g font-family=\"sans-serif\" font-size=\"16\" stroke=\"#222222\" stroke-width=\"0.5\">\n";
-    for(int i = 0; i < 4; ++i) {
-      const double lx = 190.0 * i;
-      out << "<rect class=\"c" << classes[i] << "\" x=\"" << lx << "\" y=\"" << ly
-          << "\" width=\"20\" height=\"20\"/>"
-          << "<text stroke=\"none\" fill=\"#222222\" x=\"" << lx + 26 << "\" y=\"" << ly + 16
-          << "\">" << labels[i] << "</text>\n";
-    }
-    out << "<text stroke=\"none\" fill=\"#222222\" x=\"0\" y=\"" << ly + 44
-        << "\">colour: worst corner angle of each quad</text>\n</g>\n";
+    internal::write_svg_header(out, frame.width(), frame.height(), mesh.quads.size(), mesh.points.size(), by_class);
+    internal::write_svg_quads(out, pts, mesh.quads, by_class, frame, stroke);
+    internal::write_svg_segments(out, segs, frame, stroke);
+    internal::write_svg_legend(out, frame.height() + internal::svg_margin);
     out << "</svg>\n";
     return out.good();
   });
