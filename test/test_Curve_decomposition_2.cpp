@@ -293,8 +293,8 @@ TEST(CurveDecomposition, RefinementAloneMeetsTheCriteria)
     const std::vector<Point_2> c = ellipse(8, 1, 1);
     const Spline s(c);
     const double tol = limits[1] > 0 ? limits[1] : 1e-3 * bbox_diagonal(c);
-    const std::vector<double> params = CGAL::Quad_mesher_2::internal::curves_decompose_parameters(
-        s, limits[0] * pi / 180, tol, 1u << 20, "test", false);
+    const std::vector<double> params = CGAL::Quad_mesher_2::internal::Spline_decomposition<K>(
+        s, limits[0] * pi / 180, tol, 1u << 20, "test").parameters(false);
     std::vector<Point_2> poly;
     std::size_t knot = 0;
     for(double u : params) {

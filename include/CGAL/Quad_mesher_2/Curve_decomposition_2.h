@@ -308,21 +308,47 @@ inline std::vector<std::string> curves_span_labels(const std::vector<std::size_t
   return labels;
 }
 
-/// The work of `decompose_closed_spline()`, on validated options with a resolved tolerance.
-/// Returns, for each output vertex in order, its parameter on the spline; the vertex of
-/// parameter `knot(i)` is control point `i`. `place_by_curvature == false` skips step 1 (the
-/// spans are then only halved until they pass: a test of step 2 alone).
+/// The work of `decompose_closed_spline()`, on validated options with a resolved tolerance,
+/// in two steps: vertices placed by curvature, then chords split until they pass. Works on
+/// the spline's points and derivatives as the approximate kernel's, in doubles.
 template <class K>
-std::vector<double> curves_decompose_parameters(const Closed_cubic_spline_2<K>& spline, double max_angle,
-                                                double tol, std::size_t max_points, const std::string& what,
-                                                bool place_by_curvature = true)
+class Spline_decomposition
 {
-  // the spline's points and derivatives, doubles, as the approximate kernel's
   typedef Approximate_kernel::Point_2 P;
   typedef Approximate_kernel::Vector_2 V;
-  auto as_vector = [](const typename Closed_cubic_spline_2<K>::Vector& d) { return V(d[0], d[1]); };
-  auto point_at = [&](double u) { const auto p = spline.point(u); return P(p[0], p[1]); };
-  const std::size_t n = spline.number_of_points();
+  typedef Closed_cubic_spline_2<K> Spline;
+
+public:
+  Spline_decomposition(const Spline& spline, double max_angle, double tol, std::size_t max_points,
+                       const std::string& what)
+    : m_spline(spline), m_max_angle(max_angle), m_tol(tol), m_max_points(max_points), m_what(what)
+  {}
+
+  /// For each output vertex in order, its parameter on the spline; the vertex of parameter
+  /// `knot(i)` is control point `i`. `place_by_curvature == false` skips step 1 (the spans are
+  /// then only halved until they pass: a test of step 2 alone).
+  std::vector<double> parameters(bool place_by_curvature = true) const
+  {
+    std::vector<double> params = placed_by_curvature(place_by_curvature);
+    for(;;) {
+      const std::vector<char> split = chords_to_split(params);
+      if(std::find(split.begin(), split.end(), 1) == split.end()) return params;
+      params = split_chords(params, split);
+    }
+  }
+
+private:
+  V as_vector(const typename Spline::Vector& d) const { return V(d[0], d[1]); }
+  P point_at(double u) const
+  {
+    const auto p = m_spline.point(u);
+    return P(p[0], p[1]);
+  }
+  // the parameter where chord c, from vertex c, ends
+  double param_end(const std::vector<double>& params, std::size_t c) const
+  {
+    return c + 1 < params.size() ? params[c + 1] : m_spline.period();
+  }
 
   // ---- 1. placement by curvature --------------------------------------------------------
   // A chord over a piece of curve turns from its neighbour by about the tangent turning over
@@ -332,47 +358,66 @@ std::vector<double> curves_decompose_parameters(const Closed_cubic_spline_2<K>& 
   // and placing vertices at equal increments of the integral of g puts them densely where
   // the curve bends and sparsely where it is straight. The targets get a 10% margin so that
   // the check in step 2 rarely has to refine.
-  const double angle_target = 0.9 * max_angle, tol_target = 0.9 * tol;
-  const int samples = 32;  // per span, for the integral of g (trapezoid rule)
-  std::vector<std::vector<double> > cumulative(n, std::vector<double>(samples + 1, 0.0));
-  std::vector<std::size_t> pieces(n);
-  double total = 0;
-  for(std::size_t i = 0; i < n; ++i) {
-    const double h = spline.knot(i + 1) - spline.knot(i);
+  static constexpr int samples = 32; // per span, for the integral of g (trapezoid rule)
+
+  // the integral of g over span i at its samples, from 0
+  std::vector<double> integral_of_pieces(std::size_t i) const
+  {
+    const double angle_target = 0.9 * m_max_angle, tol_target = 0.9 * m_tol;
+    std::vector<double> cumulative(samples + 1, 0.0);
+    const double h = m_spline.knot(i + 1) - m_spline.knot(i);
     double prev = 0;
     for(int k = 0; k <= samples; ++k) {
       const double t = h * k / samples;
-      const V d1 = as_vector(spline.eval(i, t, 1)), d2 = as_vector(spline.eval(i, t, 2));
+      const V d1 = as_vector(m_spline.eval(i, t, 1)), d2 = as_vector(m_spline.eval(i, t, 2));
       const double squared_speed = d1.squared_length(), speed = std::sqrt(squared_speed);
       double g = 0;
       if(speed > 0) {
-        const double kappa_speed = std::abs(CGAL::determinant(d1, d2)) / squared_speed;  // k |S'|
+        const double kappa_speed = std::abs(CGAL::determinant(d1, d2)) / squared_speed; // k |S'|
         g = (std::max)(kappa_speed / angle_target, std::sqrt(kappa_speed * speed / (8 * tol_target)));
       }
-      if(k > 0) cumulative[i][k] = cumulative[i][k - 1] + 0.5 * (prev + g) * (h / samples);
+      if(k > 0) cumulative[k] = cumulative[k - 1] + 0.5 * (prev + g) * (h / samples);
       prev = g;
     }
-    const double need = place_by_curvature ? std::ceil(cumulative[i][samples]) : 1.0;
-    total += (std::max)(1.0, need);
-    if(!(total <= static_cast<double>(max_points)))  // also catches NaN
-      throw Meshing_error(what + ": decomposing it needs more than max_points_per_loop = " + std::to_string(max_points) +
-                          " vertices (estimated before refinement); raise the limit or loosen max_chord_error / max_turning_angle_deg");
-    pieces[i] = static_cast<std::size_t>((std::max)(1.0, need));
+    return cumulative;
   }
-  std::vector<double> params;
-  params.reserve(static_cast<std::size_t>(total));
-  for(std::size_t i = 0; i < n; ++i) {
-    const double u0 = spline.knot(i), u1 = spline.knot(i + 1), h = u1 - u0;
+
+  // the knots and, between them, the vertices at equal increments of each span's integral
+  std::vector<double> placed_by_curvature(bool by_curvature) const
+  {
+    const std::size_t n = m_spline.number_of_points();
+    std::vector<std::vector<double>> cumulative(n);
+    std::vector<std::size_t> pieces(n);
+    double total = 0;
+    for(std::size_t i = 0; i < n; ++i) {
+      cumulative[i] = integral_of_pieces(i);
+      const double need = by_curvature ? std::ceil(cumulative[i][samples]) : 1.0;
+      total += (std::max)(1.0, need);
+      if(!(total <= static_cast<double>(m_max_points))) // also catches NaN
+        throw Meshing_error(m_what + ": decomposing it needs more than max_points_per_loop = " + std::to_string(m_max_points) +
+                            " vertices (estimated before refinement); raise the limit or loosen max_chord_error / max_turning_angle_deg");
+      pieces[i] = static_cast<std::size_t>((std::max)(1.0, need));
+    }
+    std::vector<double> params;
+    params.reserve(static_cast<std::size_t>(total));
+    for(std::size_t i = 0; i < n; ++i)
+      place_in_span(i, cumulative[i], pieces[i], params);
+    return params;
+  }
+
+  // appends span i's knot and its other `pieces - 1` vertices to params
+  void place_in_span(std::size_t i, const std::vector<double>& c, std::size_t pieces, std::vector<double>& params) const
+  {
+    const double u0 = m_spline.knot(i), u1 = m_spline.knot(i + 1), h = u1 - u0;
     params.push_back(u0);
-    const std::vector<double>& c = cumulative[i];
     int k = 0;
-    for(std::size_t m = 1; m < pieces[i]; ++m) {
-      const double target = c[samples] * static_cast<double>(m) / static_cast<double>(pieces[i]);
+    for(std::size_t m = 1; m < pieces; ++m) {
+      const double target = c[samples] * static_cast<double>(m) / static_cast<double>(pieces);
       while(k < samples - 1 && c[k + 1] < target) ++k;
       const double dc = c[k + 1] - c[k];
       const double f = dc > 0 ? (target - c[k]) / dc : 0.5;
       const double u = u0 + h * (k + (std::min)(1.0, (std::max)(0.0, f))) / samples;
-      if(u > params.back() && u < u1) params.push_back(u);  // strictly increasing, knots apart
+      if(u > params.back() && u < u1) params.push_back(u); // strictly increasing, knots apart
     }
   }
 
@@ -383,50 +428,58 @@ std::vector<double> curves_decompose_parameters(const Closed_cubic_spline_2<K>& 
   // is too large, and both chords at a vertex that turns too much, are split at their
   // parameter midpoint. Vertices are only ever added, so the control points stay. Both are
   // measures against thresholds, taken in doubles.
-  const int error_samples = 16;
-  const double min_piece = spline.period() * std::ldexp(1.0, -45);
-  for(;;) {
+  std::vector<char> chords_to_split(const std::vector<double>& params) const
+  {
+    const int error_samples = 16;
     const std::size_t m = params.size();
     std::vector<P> pts(m);
     for(std::size_t v = 0; v < m; ++v) pts[v] = point_at(params[v]);
-    auto param_end = [&](std::size_t c) { return c + 1 < m ? params[c + 1] : spline.period(); };
     std::vector<char> split(m, 0);
-    bool any = false;
     for(std::size_t c = 0; c < m; ++c) {
       const std::size_t d = (c + 1) % m;
-      const double ua = params[c], ub = param_end(c);
+      const double ua = params[c], ub = param_end(params, c);
       const Approximate_kernel::Segment_2 chord(pts[c], pts[d]);
       double squared_err = 0;
       for(int k = 1; k < error_samples; ++k)
         squared_err = (std::max)(squared_err, CGAL::squared_distance(point_at(ua + (ub - ua) * k / error_samples), chord));
-      if(squared_err > tol * tol) split[c] = any = true;
+      if(squared_err > m_tol * m_tol) split[c] = 1;
       const std::size_t e = (d + 1) % m;
       const V c1 = pts[d] - pts[c], c2 = pts[e] - pts[d];
-      const double turn = std::atan2(std::abs(CGAL::determinant(c1, c2)), CGAL::scalar_product(c1, c2));  // in [0, pi]
-      if(turn > max_angle) split[c] = split[d] = any = true;
+      const double turn = std::atan2(std::abs(CGAL::determinant(c1, c2)), CGAL::scalar_product(c1, c2)); // in [0, pi]
+      if(turn > m_max_angle) split[c] = split[d] = 1;
     }
-    if(!any) break;
+    return split;
+  }
+
+  // params with the chords marked in `split` halved at their parameter midpoint
+  std::vector<double> split_chords(const std::vector<double>& params, const std::vector<char>& split) const
+  {
+    const double min_piece = m_spline.period() * std::ldexp(1.0, -45);
     std::vector<double> np;
-    np.reserve(2 * m);
-    for(std::size_t c = 0; c < m; ++c) {
+    np.reserve(2 * params.size());
+    for(std::size_t c = 0; c < params.size(); ++c) {
       np.push_back(params[c]);
       if(!split[c]) continue;
-      const double ua = params[c], ub = param_end(c), mid = 0.5 * (ua + ub);
+      const double ua = params[c], ub = param_end(params, c), mid = 0.5 * (ua + ub);
       if(ub - ua < min_piece || !(mid > ua && mid < ub)) {
         const P p = point_at(ua);
-        throw Meshing_error(what + ": cannot meet the turning angle or the chord error near (" + loops_format_double(p.x()) +
+        throw Meshing_error(m_what + ": cannot meet the turning angle or the chord error near (" + loops_format_double(p.x()) +
                             ", " + loops_format_double(p.y()) +
                             "), where the spline has a cusp or a kink; move or add control points there");
       }
       np.push_back(mid);
     }
-    if(np.size() > max_points)
-      throw Meshing_error(what + ": decomposing it needs more than max_points_per_loop = " + std::to_string(max_points) +
+    if(np.size() > m_max_points)
+      throw Meshing_error(m_what + ": decomposing it needs more than max_points_per_loop = " + std::to_string(m_max_points) +
                           " vertices; raise the limit or loosen max_chord_error / max_turning_angle_deg");
-    params.swap(np);
+    return np;
   }
-  return params;
-}
+
+  const Spline& m_spline;
+  const double m_max_angle, m_tol;
+  const std::size_t m_max_points;
+  const std::string m_what;
+};
 
 /// Decomposes one closed spline into a polygon (kernel points) and checks the polygon with
 /// exact predicates: simple, and oriented like the control polygon. `tol` 0 means 1e-3 of the
@@ -466,7 +519,7 @@ std::vector<typename K::Point_2> curves_decompose_loop(const std::vector<typenam
                         std::to_string(max_points));
   if(tol == 0) tol = 1e-3 * curves_bbox_diagonal(control, traits);  // > 0: not all collinear
   const double max_angle = max_angle_deg * std::acos(-1.0) / 180;
-  const std::vector<double> params = curves_decompose_parameters(spline, max_angle, tol, max_points, what);
+  const std::vector<double> params = Spline_decomposition<K>(spline, max_angle, tol, max_points, what).parameters();
 
   std::vector<Point_2> poly;
   poly.reserve(params.size());
