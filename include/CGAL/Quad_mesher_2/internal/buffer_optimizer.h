@@ -86,6 +86,7 @@ class Buffer_optimizer : Buffer_tolerances
   typedef typename K::FT FT;
   typedef typename K::Point_2 Point_2;
   typedef Quad_vertices Quad;
+  typedef std::pair<std::size_t, std::size_t> Wedge; // a corner at a vertex: (from, to) vertices
 
 public:
   explicit Buffer_optimizer(Buffer_zone<K>& zone)
@@ -188,63 +189,76 @@ private:
 
   // Whether the quads at v fold over each other, decided exactly on the working positions:
   // their corners at v must cover the plane around it once (see times_wedges_cover()). A
-  // point sliding on the boundary adds the outside's corner between its two neighbours on
-  // the edge; the core's boundary vertices are not checked. A zero-length edge, or corners
-  // that make no closed chain, are a fold.
+  // point sliding on the boundary adds the outside's corner and must lie between its two
+  // neighbours on the edge (they make an obtuse angle at it: on its edge a straight one); the
+  // core's boundary vertices are not checked. A zero-length edge, or corners that make no
+  // closed chain, are a fold.
   bool folded_at(std::size_t v) const
   {
-    if(m_zone.is_core_boundary(v) && !m_zone.slides.count(v)) return false;
-    std::vector<std::pair<std::size_t, std::size_t>>& wedges = m_wedges; // (from, to) vertices
-    wedges.clear();
+    const auto slide = m_zone.slides.find(v);
+    if(slide == m_zone.slides.end() && m_zone.is_core_boundary(v)) return false;
+    const std::vector<Wedge>& chain = corner_chain(v);
+    if(chain.empty()) return true;
+    const Point_2d& p = m_zone.xy[v];
+    if(slide != m_zone.slides.end()) {
+      const auto& n = slide->second.neighbors;
+      if(Approximate_kernel().angle_2_object()(m_zone.xy[n[0]], p, m_zone.xy[n[1]]) != OBTUSE) return true;
+    }
+    std::vector<std::pair<Point_2d, Point_2d>>& corners = m_wedge_points;
+    corners.clear();
+    for(const Wedge& w : chain) {
+      if(m_zone.xy[w.first] == p || m_zone.xy[w.second] == p) return true;
+      corners.emplace_back(m_zone.xy[w.first], m_zone.xy[w.second]);
+    }
+    return times_wedges_cover(p, corners) != 1;
+  }
+
+  // The corners at v as (from, to) vertices, each counter-clockwise from the edge to its next
+  // vertex to the edge to its previous one, and for a sliding point the outside's corner from
+  // the neighbour that ends their chain to the one that starts it; empty if they make no
+  // closed chain. The optimiser moves points only: computed once for the vertex being tried.
+  const std::vector<Wedge>& corner_chain(std::size_t v) const
+  {
+    if(m_chain_vertex == v) return m_chain;
+    m_chain_vertex = v;
+    m_chain.clear();
     for(std::size_t q : m_quads_at[v]) {
       const Quad& Q = m_zone.mesh.quads[q];
       const int c = corner_of(Q, v);
-      wedges.emplace_back(Q[(c + 1) % 4], Q[(c + 3) % 4]);
+      m_chain.emplace_back(Q[(c + 1) % 4], Q[(c + 3) % 4]);
     }
-    if(wedges.empty()) return true;
-    auto it = m_zone.slides.find(v);
-    if(it != m_zone.slides.end() && !add_outside_wedge(v, it->second.neighbors, wedges)) return true;
-    if(!closed_chain(wedges)) return true;
-    std::vector<std::pair<Point_2d, Point_2d>>& corners = m_wedge_points;
-    corners.clear();
-    for(const auto& w : wedges) {
-      if(m_zone.xy[w.first] == m_zone.xy[v] || m_zone.xy[w.second] == m_zone.xy[v]) return true;
-      corners.emplace_back(m_zone.xy[w.first], m_zone.xy[w.second]);
-    }
-    return times_wedges_cover(m_zone.xy[v], corners) != 1;
+    const auto slide = m_zone.slides.find(v);
+    if(slide != m_zone.slides.end() && !add_outside_wedge(slide->second.neighbors, m_chain)) m_chain.clear();
+    if(!closed_chain(m_chain)) m_chain.clear();
+    return m_chain;
+  }
+
+  static std::ptrdiff_t wedges_from(const std::vector<Wedge>& wedges, std::size_t u)
+  {
+    return std::count_if(wedges.begin(), wedges.end(), [u](const Wedge& w) { return w.first == u; });
+  }
+  static std::ptrdiff_t wedges_to(const std::vector<Wedge>& wedges, std::size_t u)
+  {
+    return std::count_if(wedges.begin(), wedges.end(), [u](const Wedge& w) { return w.second == u; });
   }
 
   // whether each vertex starts as many of the wedges as it ends: they make closed chains
-  static bool closed_chain(const std::vector<std::pair<std::size_t, std::size_t>>& wedges)
+  static bool closed_chain(const std::vector<Wedge>& wedges)
   {
-    for(const auto& w : wedges) {
-      const auto starts = std::count_if(wedges.begin(), wedges.end(), [&](const auto& x) { return x.first == w.first; });
-      const auto ends = std::count_if(wedges.begin(), wedges.end(), [&](const auto& x) { return x.second == w.first; });
-      if(starts != ends) return false;
-    }
+    for(const Wedge& w : wedges)
+      if(wedges_from(wedges, w.first) != wedges_to(wedges, w.first)) return false;
     return true;
   }
 
-  // The outside's corner at a sliding point v: from the neighbour that ends its quads' chain
-  // of corners to the one that starts it. False if its quads do not make one such chain or v
-  // does not lie between its neighbours (one is missing or at v, or they make no obtuse
-  // angle at v: on its edge they make a straight one).
-  bool add_outside_wedge(std::size_t v, const std::array<std::size_t, 2>& neighbors,
-                         std::vector<std::pair<std::size_t, std::size_t>>& wedges) const
+  // Appends the outside's corner of a sliding point with these boundary neighbours; false if
+  // one is missing or its quads' corners do not make one chain from one to the other.
+  static bool add_outside_wedge(const std::array<std::size_t, 2>& neighbors, std::vector<Wedge>& wedges)
   {
-    for(std::size_t u : neighbors)
-      if(u == none || m_zone.xy[u] == m_zone.xy[v]) return false;
-    const auto angle = Approximate_kernel().angle_2_object();
-    if(angle(m_zone.xy[neighbors[0]], m_zone.xy[v], m_zone.xy[neighbors[1]]) != OBTUSE) return false;
-    auto starts = [&](std::size_t u) {
-      return std::count_if(wedges.begin(), wedges.end(), [u](const auto& w) { return w.first == u; });
-    };
-    auto ends = [&](std::size_t u) {
-      return std::count_if(wedges.begin(), wedges.end(), [u](const auto& w) { return w.second == u; });
-    };
     for(int k = 0; k < 2; ++k) {
       const std::size_t first = neighbors[k], last = neighbors[1 - k];
-      if(starts(first) == 1 && ends(first) == 0 && ends(last) == 1 && starts(last) == 0) {
+      if(first == none || last == none) return false;
+      if(wedges_from(wedges, first) == 1 && wedges_to(wedges, first) == 0 && wedges_to(wedges, last) == 1
+         && wedges_from(wedges, last) == 0) {
         wedges.emplace_back(last, first);
         return true;
       }
@@ -447,8 +461,9 @@ private:
   const double m_min_edge2; // the square of min_edge_length()
   std::vector<char> m_dirty, m_dirty_next; // per point: to try in this pass, in the next
   std::vector<Point_2d> m_targets;         // try_move()'s, kept for their memory
-  mutable std::vector<std::pair<std::size_t, std::size_t>> m_wedges;  // folded_at()'s, likewise
-  mutable std::vector<std::pair<Point_2d, Point_2d>> m_wedge_points; // likewise
+  mutable std::size_t m_chain_vertex = none; // the vertex m_chain is corner_chain() of
+  mutable std::vector<Wedge> m_chain;
+  mutable std::vector<std::pair<Point_2d, Point_2d>> m_wedge_points; // folded_at()'s, for their memory
 };
 
 } // namespace internal
