@@ -621,10 +621,11 @@ std::vector<std::pair<std::size_t, int>> corners_at(const Mesh& m, const Point& 
 // Paper §5, Fig. 8(b): an apex under 45 degrees is one quad, which keeps the input's angle and
 // has its other angles in [alpha, 180 - alpha]. Two quads shared such a tip before the strip's
 // extra chain nodes (Lake Superior's 15-degree corner: 4.6 and 10.4 degrees).
-// Only the apex's own angle is forced: from 6 degrees up the apex quad's other three (they sum
-// to 360 - alpha) fit in [45, 135]. While the strip's cost allowed them [alpha, 180 - alpha]
-// the 6, 10 and 11.5-degree apexes kept 136.5, 140.6 and 156.3 degrees there (bird's
-// 11.5-degree tip: 138.8); under about 6 degrees the needle is too thin for it near the apex.
+// Only the apex's own angle is forced: the apex quad's other three (they sum to 360 - alpha)
+// fit in [45, 135]. While the strip's cost allowed them [alpha, 180 - alpha] the 6, 10 and
+// 11.5-degree apexes kept 136.5, 140.6 and 156.3 degrees there (bird's 11.5-degree tip:
+// 138.8); while a sliding point kept a tenth of its edge from its neighbours, apexes under 6
+// degrees did too (the node beside the apex could not reach the F point it pairs with).
 TEST(Buffer_layers, acute_corners_are_spanned_by_one_quad)
 {
   for(double alpha : { 1.0, 2.0, 5.0, 6.0, 10.0, 11.5, 15.0, 30.0, 44.0 }) {
@@ -637,11 +638,10 @@ TEST(Buffer_layers, acute_corners_are_spanned_by_one_quad)
     ASSERT_EQ(apex.size(), 1u);
     const auto [q, c] = apex.front();
     EXPECT_NEAR(qm2_checks::corner_angle(m, q, c), alpha, 1e-6);
-    const double lo = alpha < 6.0 ? alpha - 1e-6 : 45 - 1e-9;
     for(int j = 1; j < 4; ++j) {
       const double a = qm2_checks::corner_angle(m, q, (c + j) % 4);
-      EXPECT_GE(a, lo);
-      EXPECT_LE(a, 180 - lo);
+      EXPECT_GE(a, 45 - 1e-9);
+      EXPECT_LE(a, 135 + 1e-9);
     }
   }
 }
@@ -840,6 +840,21 @@ TEST(Buffer_layers, bird_and_its_mirror_image_meet_45_135_but_at_sharp_corners)
     mesh_and_check(domain, label, QM::Mesh_criteria_2<K>(), &m);
     expect_45_135_but_at_input_corners(domain, m, label);
   }
+}
+
+// A random 2-opt polygon with a 2.9-degree needle and a hole (random_domains.py --seed 1,
+// domain 22): the node beside the needle's tip, kept a tenth of the tip's long edge from the
+// next node, left 22.5 and 157.5 degrees beside the tip round after round (exit status 4).
+TEST(Buffer_layers, a_needle_tip_node_slides_up_to_the_quads_it_serves)
+{
+  Domain d;
+  std::string err;
+  ASSERT_TRUE(QM::IO::read_domain(std::string(QM2_TEST_DATA_DIR) + "/random_twoopt_1_22.poly", d, &err)) << err;
+  Mesher mesher(d);
+  const Mesh m = mesher.run(Stage::BUFFER2);
+  check_whole_domain(d, m, "random 2-opt needle");
+  expect_45_135_but_at_input_corners(d, m, "random 2-opt needle");
+  EXPECT_EQ(mesher.buffer_report().bad_angle_quads, 0u);
 }
 
 // the loops of `d` but its first (the outer one) whose vertices all lie in the box, as holes

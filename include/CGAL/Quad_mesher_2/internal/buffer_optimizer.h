@@ -431,8 +431,10 @@ private:
     }
   }
 
-  // for a sliding boundary point, moves `p` onto its edge strictly between its neighbours;
-  // false if there is no room
+  // for a sliding boundary point, moves `p` onto its edge strictly between its neighbours:
+  // a thousandth of the way from each and twice the shortest edge a move may leave, at most a
+  // tenth (a fixed tenth kept the node beside a needle's long tip edge far from the quads it
+  // serves); false if there is no room
   bool slide_to(std::size_t v, Point_2d& p) const
   {
     auto it = m_zone.slides.find(v);
@@ -443,7 +445,8 @@ private:
     const Vector_2d ab = B - A;
     const double len2 = ab.squared_length();
     if(!(len2 > 0)) return false;
-    const double t = (std::min)(0.9, (std::max)(0.1, CGAL::scalar_product(p - A, ab) / len2));
+    const double margin = (std::min)(0.1, (std::max)(1e-3, 2 * std::sqrt(m_min_edge2 / len2)));
+    const double t = (std::min)(1 - margin, (std::max)(margin, CGAL::scalar_product(p - A, ab) / len2));
     // the neighbours must lie on this point's edge (or be its ends) for the chain to stay on it
     const auto& lv = m_zone.loops.loops[it->second.loop].vertices;
     const Point_2d E0 = to_point_2d(m_zone.domain.points[lv[it->second.edge]]);
