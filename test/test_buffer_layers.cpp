@@ -857,6 +857,41 @@ TEST(Buffer_layers, a_needle_tip_node_slides_up_to_the_quads_it_serves)
   EXPECT_EQ(mesher.buffer_report().bad_angle_quads, 0u);
 }
 
+// A random star with notches of 290 to 330 degrees (random_domains.py --seed 5, domain 31):
+// the middle quad of a notch's fan of three starts flat (as wide as 161.6 degrees at the
+// corner and at its F point). Moving the F point alone leaves the corner's angle the worst,
+// turning the fan's outer points alone leaves the F point's: the optimiser kept neither
+// until a move could lower the angles' excess with the worst unchanged. Then every fan
+// opens in the first round; before, four stayed out and waited for refinement rounds.
+TEST(Buffer_layers, a_fan_at_a_notch_opens_in_the_first_round)
+{
+  Domain d;
+  std::string err;
+  ASSERT_TRUE(QM::IO::read_domain(std::string(QM2_TEST_DATA_DIR) + "/random_star_5_31.poly", d, &err)) << err;
+  const Loops loops = QM::extract_loops(d);
+  Mesher mesher(d);
+  mesher.build_quadtree();
+  Mesh m = mesher.core_mesh();
+  mesher.clear_buffer_zone(m);
+  mesher.fill_buffer_zone(m);
+  std::size_t notches = 0;
+  for(std::size_t l = 0; l < loops.loops.size(); ++l)
+    for(std::size_t k = 0; k < loops.loops[l].vertices.size(); ++k) {
+      if(interior_angle(d, loops, l, k) <= 270) continue;
+      ++notches;
+      const Point& corner = d.points[loops.loops[l].vertices[k]];
+      const auto fan = corners_at(m, corner);
+      EXPECT_GE(fan.size(), 3u) << "notch at (" << to_d(corner.x()) << ", " << to_d(corner.y()) << ")";
+      for(const auto& [q, c] : fan)
+        for(int j = 0; j < 4; ++j) {
+          const double a = qm2_checks::corner_angle(m, q, j);
+          EXPECT_TRUE(a >= 45 - 1e-9 && a <= 135 + 1e-9)
+            << a << " degrees in the fan at (" << to_d(corner.x()) << ", " << to_d(corner.y()) << ")";
+        }
+    }
+  EXPECT_GE(notches, 4u);
+}
+
 // the loops of `d` but its first (the outer one) whose vertices all lie in the box, as holes
 // (with their hole points) in that box, or in `frame` if given
 Domain islands_in_box(const Domain& d, double x0, double x1, double y0, double y1,

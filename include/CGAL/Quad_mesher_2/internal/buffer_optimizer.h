@@ -122,18 +122,22 @@ public:
 
 private:
   // (invalid quads around v, quads outside [45, 135] around it, the worst deviation from
-  // 90 degrees), compared in this order: no move may make a quad invalid. A move must lower
-  // the worst by more than rounding (1e-9 degrees is within it on small cells far from the
-  // origin): the same moves on a translated domain.
+  // 90 degrees, the excess of their angles out), compared in this order: no move may make a
+  // quad invalid. A move must lower the worst by more than rounding (1e-9 degrees is within it
+  // on small cells far from the origin): the same moves on a translated domain. One that
+  // leaves the worst as it is may lower the excess: where a quad has two corners out, each
+  // vertex's move mends one and leaves the worst to the other's.
   struct Local
   {
     int invalid = 0, out = 0;
-    double worst = 0;
+    double worst = 0, excess = 0;
     bool operator<(const Local& o) const
     {
       if(invalid != o.invalid) return invalid < o.invalid;
       if(out != o.out) return out < o.out;
-      return worst < o.worst - angle_tolerance;
+      if(worst < o.worst - angle_tolerance) return true;
+      if(worst > o.worst + angle_tolerance) return false;
+      return excess < o.excess - angle_tolerance;
     }
   };
 
@@ -171,8 +175,12 @@ private:
     for(std::size_t q : m_quads_at[v]) {
       const double b = m_zone.quad_cost(m_zone.mesh.quads[q]);
       r.worst = (std::max)(r.worst, b);
-      if(b >= 1000.0) ++r.invalid;
-      else if(b > 45.0 + angle_tolerance) ++r.out;
+      if(b >= 1000.0) {
+        ++r.invalid;
+      } else if(b > 45.0 + angle_tolerance) {
+        ++r.out;
+        r.excess += m_zone.quad_excess(m_zone.mesh.quads[q]);
+      }
       const Quad& Q = m_zone.mesh.quads[q];
       const int c = corner_of(Q, v);
       // an edge collapsing to a point keeps the angles fine but merges two vertices: the

@@ -339,6 +339,19 @@ public:
     return b;
   }
 
+  // the sum over a quad's corners outside [45, 135] of the square of their excess, but for
+  // an angle an input corner forces: it tells apart moves that leave the worst angle as it is
+  double quad_excess(const Quad& q) const
+  {
+    double sum = 0;
+    for(int k = 0; k < 4; ++k) {
+      const double a = corner_angle_degrees(xy[q[(k + 3) % 4]], xy[q[k]], xy[q[(k + 1) % 4]]);
+      const double excess = std::abs(a - 90.0) - 45.0;
+      if(excess > 0 && !forced_angle(q[k], a)) sum += excess * excess;
+    }
+    return sum;
+  }
+
   // strictly convex and counter-clockwise by the kernel's predicate, and no corner nearly flat
   // (the quality check rejects those)
   bool is_valid_quad(const Quad& Q) const
