@@ -73,9 +73,7 @@ public:
   void build()
   {
     if(!m_projection.project()) return;
-    const Strip_plan plan = best_plan();
-    m_costs.clear();
-    add_plan(plan);
+    add_plan(best_plan());
   }
 
 private:
@@ -357,13 +355,12 @@ private:
     m_zone.xy.push_back(xy);
   }
 
-  // The candidates had ids of their own past the mesh's points (the cost cache knows quads
-  // by their ids): they go, and the chosen ones become mesh points.
+  // The candidates had ids of their own past the mesh's points: they go, and the chosen ones
+  // become mesh points.
   void forget_candidates(std::size_t first_candidate)
   {
     m_zone.xy.resize(first_candidate);
     m_zone.corner_angle.resize((std::min)(m_zone.corner_angle.size(), first_candidate));
-    m_costs.forget_points_from(first_candidate);
   }
 
   // the extra nodes the pairing took, made mesh points and put into the chain, and into the
@@ -497,7 +494,6 @@ private:
       m_zone.mesh.points[fbase + i] = saved[i];
       m_zone.first_points[c][i] = m_zone.xy[fbase + i] = to_point_2d(saved[i]);
     }
-    m_costs.clear(); // it knows quads by their points' ids
   }
 
   // The plan with three F points at each corner's fan, or with four where a corner over 270

@@ -4,7 +4,7 @@
 //
 // Paper §4.6, what a quad costs in the second buffer layer's pairing: its deviation from
 // right angles (Buffer_zone::quad_cost()), more where the boundary fixes an angle out of
-// range, cached while a strip is paired.
+// range. Not cached: a hash map of the quads tried cost twice what it saved.
 
 #ifndef CGAL_QUAD_MESHER_2_INTERNAL_STRIP_COSTS_H
 #define CGAL_QUAD_MESHER_2_INTERNAL_STRIP_COSTS_H
@@ -14,15 +14,12 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <iterator>
-#include <unordered_map>
 
 namespace CGAL {
 namespace Quad_mesher_2 {
 namespace internal {
 
-/// The costs of the quads one strip's pairing tries (see the file comment). The cache knows
-/// quads by their points' ids: it is cleared when the points move.
+/// The costs of the quads one strip's pairing tries (see the file comment).
 template <class K>
 class Strip_quad_costs : Buffer_tolerances
 {
@@ -31,26 +28,7 @@ class Strip_quad_costs : Buffer_tolerances
 public:
   explicit Strip_quad_costs(const Buffer_zone<K>& zone) : m_zone(zone) {}
 
-  void clear() { m_cache.clear(); }
-  /// forgets the quads with a point `first` or later (candidate points that are gone)
-  void forget_points_from(std::size_t first)
-  {
-    for(auto it = m_cache.begin(); it != m_cache.end();) {
-      bool candidate = false;
-      for(std::size_t v : it->first) candidate = candidate || v >= first;
-      it = candidate ? m_cache.erase(it) : std::next(it);
-    }
-  }
-
-  double cost(const Quad& q) const
-  {
-    if(q[0] == none) return 2000.0;
-    auto it = m_cache.find(q);
-    if(it != m_cache.end()) return it->second;
-    const double b = m_zone.quad_cost(q);
-    m_cache.emplace(q, b);
-    return b;
-  }
+  double cost(const Quad& q) const { return q[0] == none ? 2000.0 : m_zone.quad_cost(q); }
 
   // A quad's cost in the strip's pairing: an angle out of [45, 135] at a boundary node between
   // two others (the middle of a fan of boundary edges) is the boundary's own angle there,
@@ -103,18 +81,7 @@ public:
   }
 
 private:
-  struct Quad_hash
-  {
-    std::size_t operator()(const Quad& q) const
-    {
-      std::size_t h = 0;
-      for(std::size_t v : q) h = h * 0x9E3779B97F4A7C15ull + v;
-      return h ^ (h >> 29);
-    }
-  };
-
   const Buffer_zone<K>& m_zone;
-  mutable std::unordered_map<Quad, double, Quad_hash> m_cache;
 };
 
 } // namespace internal
