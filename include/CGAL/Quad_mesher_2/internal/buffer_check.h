@@ -47,12 +47,10 @@ public:
       if(valid) {
         std::array<double, 4> a;
         for(int c = 0; c < 4; ++c) a[c] = corner_angle_degrees(P[(c + 3) % 4], P[c], P[(c + 1) % 4]);
-        // a quad spanning a corner alpha under 45 degrees may have angles in [alpha, 180 - alpha]
-        double lo = 45.0;
+        // only the angle of a corner under 45 degrees is forced, as the verifier has it: the
+        // other three of the quad spanning it, not the paper's [alpha, 180 - alpha]
         for(int c = 0; c < 4; ++c)
-          if(m_zone.forced_angle(Q[c], a[c])) lo = (std::min)(lo, m_zone.input_corner_angle(Q[c]));
-        for(int c = 0; c < 4; ++c)
-          if((a[c] < lo - verifier_slack || a[c] > 180.0 - lo + verifier_slack) && !m_zone.forced_angle(Q[c], a[c]))
+          if((a[c] < 45.0 - verifier_slack || a[c] > 135.0 + verifier_slack) && !m_zone.forced_angle(Q[c], a[c]))
             bad_angle = true;
       }
       if(!valid) ++m_zone.report.invalid_quads;

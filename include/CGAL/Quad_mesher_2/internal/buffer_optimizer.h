@@ -16,6 +16,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -99,12 +100,28 @@ public:
   /// new boundary points slide along their input edge, the core's boundary vertices move too;
   /// a move is kept only if it lowers the largest deviation from 90° of the quads around the
   /// vertex and keeps them convex and unfolded. Then, around each quad still outside
-  /// [45°, 135°], the core vertices within two quads of it may move too. Input vertices and
+  /// [45°, 135°], a move that keeps that deviation may lower the excess of the angles out,
+  /// and the core vertices within two quads of it may move too. Input vertices and
   /// `fixed_points` (a domain's isolated points) never move.
   void optimize(const std::vector<std::size_t>& fixed_points, int passes = 12)
   {
     const std::vector<std::size_t> movable = movable_vertices();
+    // Two courses, the better one kept: moves lowering the excess from the start, and the
+    // min-max moves first, then those lowering the excess around the quads still out. Where
+    // the moves lock each other the order decides, and each course mends quads the other
+    // leaves out.
+    const std::vector<Point_2d> start = positions(movable);
+    m_by_excess = true;
     run_passes(movable, passes);
+    const Outcome excess_first = outcome();
+    const std::vector<Point_2d> excess_first_xy = positions(movable);
+    restart(movable, start, 1);
+    m_by_excess = false;
+    run_passes(movable, passes);
+    m_by_excess = true;
+    for(std::size_t v : ring(vertices_of_quads_out())) m_dirty[v] = 1;
+    run_passes(movable, passes);
+    if(excess_first < outcome()) restart(movable, excess_first_xy, 0); // where its passes ended
     const std::vector<std::size_t> repair = repair_vertices(fixed_points);
     std::vector<Point_2d> before(repair.size());
     for(std::size_t k = 0; k < repair.size(); ++k) before[k] = m_zone.xy[repair[k]];
@@ -124,19 +141,20 @@ private:
   // (invalid quads around v, quads outside [45, 135] around it, the worst deviation from
   // 90 degrees, the excess of their angles out), compared in this order: no move may make a
   // quad invalid. A move must lower the worst by more than rounding (1e-9 degrees is within it
-  // on small cells far from the origin): the same moves on a translated domain. One that
-  // leaves the worst as it is may lower the excess: where a quad has two corners out, each
-  // vertex's move mends one and leaves the worst to the other's.
+  // on small cells far from the origin): the same moves on a translated domain. With
+  // `by_excess`, one that leaves the worst as it is may lower the excess: where a quad has two
+  // corners out, each vertex's move mends one and leaves the worst to the other's.
   struct Local
   {
     int invalid = 0, out = 0;
     double worst = 0, excess = 0;
+    bool by_excess = false;
     bool operator<(const Local& o) const
     {
       if(invalid != o.invalid) return invalid < o.invalid;
       if(out != o.out) return out < o.out;
       if(worst < o.worst - angle_tolerance) return true;
-      if(worst > o.worst + angle_tolerance) return false;
+      if(worst > o.worst + angle_tolerance || !by_excess) return false;
       return excess < o.excess - angle_tolerance;
     }
   };
@@ -172,6 +190,7 @@ private:
   Local local_cost(std::size_t v, const Local* bound) const
   {
     Local r;
+    r.by_excess = m_by_excess;
     for(std::size_t q : m_quads_at[v]) {
       const double b = m_zone.quad_cost(m_zone.mesh.quads[q]);
       r.worst = (std::max)(r.worst, b);
@@ -325,6 +344,62 @@ private:
     return true;
   }
 
+  // how a course of moves left the quads the buffer stages made or changed: (invalid, outside
+  // [45, 135], the worst deviation from 90 degrees), compared in this order
+  struct Outcome
+  {
+    std::size_t invalid = 0, out = 0;
+    double worst = 0;
+    bool operator<(const Outcome& o) const
+    {
+      if(invalid != o.invalid) return invalid < o.invalid;
+      if(out != o.out) return out < o.out;
+      return worst < o.worst - angle_tolerance;
+    }
+  };
+
+  Outcome outcome() const
+  {
+    Outcome r;
+    for(const Quad& q : m_zone.mesh.quads) {
+      if(!m_zone.made_or_changed(q)) continue;
+      const double b = m_zone.quad_cost(q);
+      if(b >= 1000.0) ++r.invalid;
+      else if(b > 45.0 + angle_tolerance) ++r.out;
+      r.worst = (std::max)(r.worst, b);
+    }
+    return r;
+  }
+
+  std::vector<Point_2d> positions(const std::vector<std::size_t>& vertices) const
+  {
+    std::vector<Point_2d> xy(vertices.size());
+    for(std::size_t k = 0; k < vertices.size(); ++k) xy[k] = m_zone.xy[vertices[k]];
+    return xy;
+  }
+
+  // the vertices back at `xy`, to be tried again (`dirty`) or not
+  void restart(const std::vector<std::size_t>& vertices, const std::vector<Point_2d>& xy, char dirty)
+  {
+    for(std::size_t k = 0; k < vertices.size(); ++k) {
+      m_zone.xy[vertices[k]] = xy[k];
+      m_dirty[vertices[k]] = dirty;
+    }
+    std::fill(m_dirty_next.begin(), m_dirty_next.end(), 0);
+  }
+
+  // the vertices of the quads the buffer stages made or changed that are valid but outside
+  // [45, 135]
+  std::vector<std::size_t> vertices_of_quads_out() const
+  {
+    std::vector<std::size_t> out;
+    for(const Quad& q : m_zone.mesh.quads) {
+      const double b = m_zone.made_or_changed(q) ? m_zone.quad_cost(q) : 0.0;
+      if(b > 45.0 + angle_tolerance && b < 1000.0) out.insert(out.end(), q.begin(), q.end());
+    }
+    return out;
+  }
+
   // the vertices of the quads at `from`
   std::vector<std::size_t> ring(const std::vector<std::size_t>& from) const
   {
@@ -343,12 +418,7 @@ private:
   // angles out of range.
   std::vector<std::size_t> repair_vertices(const std::vector<std::size_t>& fixed_points) const
   {
-    std::vector<std::size_t> near_bad;
-    for(const Quad& q : m_zone.mesh.quads) {
-      const double b = m_zone.made_or_changed(q) ? m_zone.quad_cost(q) : 0.0;
-      if(b > 45.0 + angle_tolerance && b < 1000.0) near_bad.insert(near_bad.end(), q.begin(), q.end());
-    }
-    near_bad = ring(ring(near_bad));
+    std::vector<std::size_t> near_bad = ring(ring(vertices_of_quads_out()));
     std::vector<char> fixed(m_zone.mesh.points.size(), 0);
     for(std::size_t v : fixed_points) if(v < fixed.size()) fixed[v] = 1;
     near_bad.erase(std::remove_if(near_bad.begin(), near_bad.end(), [&](std::size_t x) {
@@ -455,13 +525,17 @@ private:
     if(!(len2 > 0)) return false;
     const double margin = (std::min)(0.1, (std::max)(1e-3, 2 * std::sqrt(m_min_edge2 / len2)));
     const double t = (std::min)(1 - margin, (std::max)(margin, CGAL::scalar_product(p - A, ab) / len2));
-    // the neighbours must lie on this point's edge (or be its ends) for the chain to stay on it
+    // The neighbours must lie on this point's edge (or be its ends) for the chain to stay on
+    // it: within 1e-9 of its length, or the rounding of its coordinates (points on a short
+    // edge far from the origin are off its line by more than 1e-9 of it).
     const auto& lv = m_zone.loops.loops[it->second.loop].vertices;
     const Point_2d E0 = to_point_2d(m_zone.domain.points[lv[it->second.edge]]);
     const Point_2d E1 = to_point_2d(m_zone.domain.points[lv[(it->second.edge + 1) % lv.size()]]);
     const Vector_2d e = E1 - E0;
     const double el = length_2d(e);
-    if(std::abs(CGAL::determinant(e, A - E0)) > 1e-9 * el * el || std::abs(CGAL::determinant(e, B - E0)) > 1e-9 * el * el)
+    const double magnitude = (std::max)({ std::abs(E0.x()), std::abs(E0.y()), std::abs(E1.x()), std::abs(E1.y()) });
+    const double off_line = el * (1e-9 * el + 2 * std::numeric_limits<double>::epsilon() * magnitude);
+    if(std::abs(CGAL::determinant(e, A - E0)) > off_line || std::abs(CGAL::determinant(e, B - E0)) > off_line)
       return false;
     p = along_2d(A, B, t);
     return true;
@@ -470,6 +544,7 @@ private:
   Buffer_zone<K>& m_zone;
   const Vertex_quads m_quads_at;
   const double m_min_edge2; // the square of min_edge_length()
+  bool m_by_excess = false;  // whether moves may lower the excess alone (Local)
   std::vector<char> m_dirty, m_dirty_next; // per point: to try in this pass, in the next
   std::vector<Point_2d> m_targets;         // try_move()'s, kept for their memory
   mutable std::size_t m_chain_vertex = none; // the vertex m_chain is corner_chain() of

@@ -209,9 +209,9 @@ public:
   bool is_input_vertex(std::size_t v) const { return !std::isnan(input_corner_angle(v)); }
 
   // true if `angle`, a quad's angle at mesh vertex v, is forced: v is an input corner sharper
-  // than 45 degrees and the quad spans all of it (one quad there keeps its angles in
-  // [alpha, 180 - alpha]; a split corner has less). A corner over 270 degrees forces nothing:
-  // a fan of three quads splits it within [45, 135].
+  // than 45 degrees and the quad spans all of it (a split corner has less). The quad's other
+  // three angles are not. A corner over 270 degrees forces nothing: a fan of three quads
+  // splits it within [45, 135].
   bool forced_angle(std::size_t v, double angle) const
   {
     const double alpha = input_corner_angle(v);
@@ -320,20 +320,15 @@ public:
     for(int k = 0; k < 4; ++k) P[k] = xy[q[k]];
     double b = quad_badness(P);
     // an angle an input corner alpha forces is not the strip's fault: the quad is judged by its
-    // other three against [45, 135], not the paper's looser [alpha, 180 - alpha]. From a
-    // 6-degree corner up they fit there (they sum to 360 - alpha) and their deviation beyond 45
-    // counts in full; below, on a needle's tip, they cannot all fit and it counts less.
+    // other three against [45, 135], not the paper's looser [alpha, 180 - alpha]. They fit
+    // there for any alpha (they sum to 360 - alpha: 120 each, say).
     if(b < 1000.0)
       for(int k = 0; k < 4; ++k)
         if(input_corner_angle(q[k]) < 45.0 // cheap test first: the cost runs in inner loops
            && forced_angle(q[k], corner_angle_degrees(P[(k + 3) % 4], P[k], P[(k + 1) % 4]))) {
-          const double scale = input_corner_angle(q[k]) >= 6.0 ? 1.0 : 45.0 / (90.0 - input_corner_angle(q[k]));
           b = 0;
           for(int j = 0; j < 4; ++j)
-            if(j != k) {
-              const double d = std::abs(corner_angle_degrees(P[(j + 3) % 4], P[j], P[(j + 1) % 4]) - 90.0);
-              b = (std::max)(b, d <= 45.0 ? d : 45.0 + scale * (d - 45.0));
-            }
+            if(j != k) b = (std::max)(b, std::abs(corner_angle_degrees(P[(j + 3) % 4], P[j], P[(j + 1) % 4]) - 90.0));
           break;
         }
     return b;
