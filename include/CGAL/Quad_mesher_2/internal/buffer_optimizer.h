@@ -113,7 +113,7 @@ public:
     const std::vector<Point_2d> start = positions(movable);
     m_by_excess = true;
     run_passes(movable, passes);
-    const Outcome excess_first = outcome();
+    const Local excess_first = outcome();
     const std::vector<Point_2d> excess_first_xy = positions(movable);
     restart(movable, start, 1);
     m_by_excess = false;
@@ -157,6 +157,17 @@ private:
       if(worst > o.worst + angle_tolerance || !by_excess) return false;
       return excess < o.excess - angle_tolerance;
     }
+    // counts quad q (its cost b) in
+    void add(double b, const Buffer_zone<K>& zone, const Quad& q)
+    {
+      worst = (std::max)(worst, b);
+      if(b >= 1000.0) {
+        ++invalid;
+      } else if(b > 45.0 + angle_tolerance) {
+        ++out;
+        excess += zone.quad_excess(q);
+      }
+    }
   };
 
   static double square(double x) { return x * x; }
@@ -192,15 +203,8 @@ private:
     Local r;
     r.by_excess = m_by_excess;
     for(std::size_t q : m_quads_at[v]) {
-      const double b = m_zone.quad_cost(m_zone.mesh.quads[q]);
-      r.worst = (std::max)(r.worst, b);
-      if(b >= 1000.0) {
-        ++r.invalid;
-      } else if(b > 45.0 + angle_tolerance) {
-        ++r.out;
-        r.excess += m_zone.quad_excess(m_zone.mesh.quads[q]);
-      }
       const Quad& Q = m_zone.mesh.quads[q];
+      r.add(m_zone.quad_cost(Q), m_zone, Q);
       const int c = corner_of(Q, v);
       // an edge collapsing to a point keeps the angles fine but merges two vertices: the
       // whole-mesh check rejects vertices within 1e-9 of the diagonal
@@ -344,30 +348,13 @@ private:
     return true;
   }
 
-  // how a course of moves left the quads the buffer stages made or changed: (invalid, outside
-  // [45, 135], the worst deviation from 90 degrees), compared in this order
-  struct Outcome
+  // how a course of moves left the quads the buffer stages made or changed, as a Local over
+  // them all, compared without the excess
+  Local outcome() const
   {
-    std::size_t invalid = 0, out = 0;
-    double worst = 0;
-    bool operator<(const Outcome& o) const
-    {
-      if(invalid != o.invalid) return invalid < o.invalid;
-      if(out != o.out) return out < o.out;
-      return worst < o.worst - angle_tolerance;
-    }
-  };
-
-  Outcome outcome() const
-  {
-    Outcome r;
-    for(const Quad& q : m_zone.mesh.quads) {
-      if(!m_zone.made_or_changed(q)) continue;
-      const double b = m_zone.quad_cost(q);
-      if(b >= 1000.0) ++r.invalid;
-      else if(b > 45.0 + angle_tolerance) ++r.out;
-      r.worst = (std::max)(r.worst, b);
-    }
+    Local r;
+    for(const Quad& q : m_zone.mesh.quads)
+      if(m_zone.made_or_changed(q)) r.add(m_zone.quad_cost(q), m_zone, q);
     return r;
   }
 
