@@ -28,9 +28,23 @@ namespace CGAL {
 namespace Quad_mesher_2 {
 namespace internal {
 
+// the unit vectors at angles 2 pi k / N, k = 0 to N - 1 (computed once: the searches below
+// step along them in their inner loops)
+template <int N>
+const std::array<Vector_2d, N>& unit_directions()
+{
+  static const std::array<Vector_2d, N> directions = [] {
+    std::array<Vector_2d, N> d;
+    for(int k = 0; k < N; ++k)
+      d[std::size_t(k)] = Vector_2d(std::cos(k * Buffer_tolerances::pi / (N / 2)), std::sin(k * Buffer_tolerances::pi / (N / 2)));
+    return d;
+  }();
+  return directions;
+}
+
 // A pattern search in the plane about `at`, the best point so far, which `consider(p)`
 // replaces by p if p is better (and then returns true): 16 directions at a step from a
-// twentieth of `scale` down to 1e-10 of it, doubled after a move and halved after Buffer_tolerances::none. At
+// twentieth of `scale` down to 1e-10 of it, doubled after a move and halved after none. At
 // most 400 tries of the 16: along a ridge of the angles' maximum the moves can be tiny and
 // many.
 template <class Consider>
@@ -40,8 +54,8 @@ void pattern_search(const Point_2d& at, double scale, const Consider& consider)
   for(int i = 0; i < 400 && step > 1e-10 * scale; ++i) {
     const Point_2d from = at;
     bool moved = false;
-    for(int k = 0; k < 16; ++k)
-      moved = consider(from + step * Vector_2d(std::cos(k * Buffer_tolerances::pi / 8), std::sin(k * Buffer_tolerances::pi / 8))) || moved;
+    for(const Vector_2d& d : unit_directions<16>())
+      moved = consider(from + step * d) || moved;
     step = moved ? (std::min)(2 * step, 0.05 * scale) : step / 2;
   }
 }
@@ -96,9 +110,7 @@ private:
        || m_zone.near_input_corner(b))
       return false;
     const double e = 0.5 * (length_2d(old - m_zone.xy[a]) + length_2d(m_zone.xy[c] - old));
-    auto ring = [&](double r, int k) {
-      return old + (r * e) * Vector_2d(std::cos(k * pi / 6), std::sin(k * pi / 6));
-    };
+    auto ring = [&](double r, int k) { return old + (r * e) * unit_directions<12>()[std::size_t(k)]; };
     Point_2d best_p = old;
     auto consider = [&](const Point_2d& p) {
       const double x = excess(p);
@@ -156,11 +168,12 @@ private:
     auto node = [&](int d) { return cyc[(i + 2 * n + d) % n]; };
     auto beta_at = [&](int d) { return right_side_angle(m_zone.xy[node(d - 1)], m_zone.xy[node(d)], m_zone.xy[node(d + 1)]); };
     if(buffer_angle_excess(beta_at(0)) <= angle_tolerance || m_zone.near_input_corner(cyc[i])) return false;
-    auto objective = [&](bool count_first) {
+    auto all_betas = [&] {
       std::array<double, 7> betas;
       for(int d = -3; d <= 3; ++d) betas[std::size_t(d + 3)] = beta_at(d);
-      return excess_score(betas, count_first);
+      return betas;
     };
+    auto objective = [&](bool count_first) { return excess_score(all_betas(), count_first); };
     const double start = objective(true);
     std::vector<std::size_t> movers;
     std::vector<Point_2d> before;
@@ -178,11 +191,15 @@ private:
         const std::size_t a = node(d - 1), c = node(d + 1);
         const Point_2d old = m_zone.xy[v];
         const double e = 0.5 * (length_2d(old - m_zone.xy[a]) + length_2d(m_zone.xy[c] - old));
-        double best = objective(false);
+        // v's move changes the angles at it and its two neighbours only
+        const std::array<double, 7> betas = all_betas();
+        double best = excess_score(betas, false);
         Point_2d best_p = old;
         auto consider = [&](const Point_2d& p) {
           m_zone.xy[v] = p;
-          const double x = objective(false);
+          std::array<double, 7> moved_betas = betas;
+          for(int j = d - 1; j <= d + 1; ++j) moved_betas[std::size_t(j + 3)] = beta_at(j);
+          const double x = excess_score(moved_betas, false);
           m_zone.xy[v] = old;
           if(!(x < best - angle_tolerance / 10) || !admissible_boundary_position(a, v, c, p, quads_at)) return false;
           best = x;
@@ -190,8 +207,8 @@ private:
           return true;
         };
         for(double r : { 0.05, 0.1, 0.2 })
-          for(int k = 0; k < 12; ++k)
-            consider(old + (r * e) * Vector_2d(std::cos(k * pi / 6), std::sin(k * pi / 6)));
+          for(const Vector_2d& u : unit_directions<12>())
+            consider(old + (r * e) * u);
         pattern_search(best_p, e, consider);
         m_zone.xy[v] = best_p;
         moved = moved || best_p != old;
