@@ -1777,6 +1777,26 @@ TEST(Buffer_layers, the_round_observer_sees_every_round_as_it_ends)
   EXPECT_EQ(seen.size(), figures.size());
 }
 
+// An invalid round is refined where its angles are out too (away from its invalid quads), not
+// for validity first: a convex 35-gon with a 3.8 degree notch and a hole (random_sweep.py
+// --seed 2, domain 20) has one quad not convex and one angle out in its first round, and took
+// a valid round more with the angle out
+TEST(Buffer_layers, an_invalid_round_is_refined_at_its_angles_out_too)
+{
+  Domain d;
+  std::string err;
+  ASSERT_TRUE(QM::IO::read_domain(std::string(QM2_TEST_DATA_DIR) + "/random_convex_2_20.poly", d, &err)) << err;
+  Mesher mesher(d);
+  mesher.run(Stage::BUFFER2);
+  const auto& figures = mesher.round_figures();
+  ASSERT_GE(figures.size(), 2u);
+  EXPECT_FALSE(figures[0].valid);
+  EXPECT_GT(figures[0].bad_angle_quads, 0u);
+  EXPECT_EQ(figures.size(), 2u);
+  EXPECT_TRUE(figures.back().valid);
+  EXPECT_EQ(figures.back().bad_angle_quads, 0u);
+}
+
 // The refinement template of the cell [0, 4]^2 (four corner squares and eight kites with 45
 // degrees at the centre (2, 2)) without its upper-left quadrant: the centre is a notch of the
 // core whose core angles are all 45 degrees, as Lake Superior's (0.8877, -0.6432) was.

@@ -229,11 +229,11 @@ public:
   /// at most `max_refinement_rounds` times in all; a mesh with invalid quads is never
   /// returned. Where a valid buffer has angles outside [45°, 135°] that no input corner
   /// forces, the quadtree is refined there, round after round while their count falls and in
-  /// at most `max_stalled_angle_rounds` valid rounds that do not lower it; a round the angle refinement made invalid is
-  /// refined for validity first. The valid round with the fewest such quads is the one
-  /// returned (kept from its round if a later one was worse). The rounds end too once the
-  /// refinement a round asked for splits no cell (finer cells are refused there): the next
-  /// round would repeat it.
+  /// at most `max_stalled_angle_rounds` valid rounds that do not lower it; an invalid round
+  /// is refined both where it is invalid and where its angles are out, away from its invalid
+  /// quads. The valid round with the fewest such quads is the one returned (kept from its
+  /// round if a later one was worse). The rounds end too once the refinement a round asked
+  /// for splits no cell (finer cells are refused there): the next round would repeat it.
   Mesh run(Stage last)
   {
     m_refinement_queue.clear();
@@ -270,22 +270,25 @@ public:
         return mesh;
       fill_buffer_zone(mesh, last);
       const bool valid = check_whole_mesh(mesh);
-      // refined for validity first; for angles only once a round is valid
-      std::vector<internal::Refinement_request> requests =
-        valid ? m_buffer_requests.for_angles : m_buffer_requests.for_validity;
+      // An invalid round is refined at its angles out too (refining for validity alone, then
+      // for angles, costs a whole round more); the buffer asks for none beside its invalid
+      // quads. A stage on its way is not refined for angles: they are the finished buffer's.
+      std::vector<internal::Refinement_request> requests;
+      if(!valid)
+        requests = m_buffer_requests.for_validity;
+      if(last >= Stage::BUFFER2)
+        requests.insert(requests.end(), m_buffer_requests.for_angles.begin(), m_buffer_requests.for_angles.end());
       // Buffer nodes of two loops met across a narrow gap (a node on another's edge, or
       // nearly on another node): the buffer's own checks do not see them. One level finer
       // there, as for a bad quad.
       for(const internal::Point_2d& p : m_flawed)
         requests.emplace_back(p, 0.0);
       record_round(mesh, valid, requests.size(), round_start);
-      // a stage on its way is not refined for angles: they are the finished buffer's
       const std::size_t bad = m_buffer_report.bad_angle_quads;
       if(valid && (bad == 0 || last < Stage::BUFFER2))
         return mesh;
       const std::size_t added = m_refinement_queue.add(*m_tree, requests);
       bool improved = false;
-      // an angle round that came out invalid is refined for validity, within the round budget
       if(m_rounds.refine_for_buffer(valid, bad, added, improved, [&] { return buffer_error(requests, true); })) {
         if(improved)
           best = save_round(std::move(mesh));
@@ -325,7 +328,7 @@ public:
     /// of those, the core's (changed by the templates), the first layer's and the second's
     std::array<std::size_t, 3> bad_angle_quads_by_layer{ { 0, 0, 0 } };
     bool valid = false;               ///< the whole mesh passed its check
-    std::size_t refinement_requests = 0; ///< places it asked to be finer (for validity, or angles once valid)
+    std::size_t refinement_requests = 0; ///< places it asked to be finer (for angles, and for validity if invalid)
     double seconds = 0;               ///< its wall-clock time, from the quadtree to the whole-mesh check
   };
   /// the rounds of the last `run()` past the clearance, in order (the one returned may be an

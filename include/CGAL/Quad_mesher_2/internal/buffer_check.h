@@ -11,6 +11,7 @@
 #define CGAL_QUAD_MESHER_2_INTERNAL_BUFFER_CHECK_H
 
 #include <CGAL/Quad_mesher_2/internal/buffer_zone.h>
+#include <CGAL/Quad_mesher_2/internal/mesh_adjacency.h>
 
 #include <algorithm>
 #include <array>
@@ -34,17 +35,22 @@ public:
 
   /// Checks every quad the buffer stages made or changed with exact predicates and counts
   /// those with an angle outside [45, 135] that no sharp input corner forces; records
-  /// refinement requests at both.
+  /// refinement requests at both, but at those within two quads of an invalid one: a broken
+  /// strip's angles are not the finished buffer's (an invalid round is refined for both).
   void check_quads()
   {
+    std::vector<char> valid(m_zone.mesh.quads.size(), 1);
+    for(std::size_t q = 0; q < valid.size(); ++q)
+      if(m_zone.made_or_changed(m_zone.mesh.quads[q])) valid[q] = m_zone.is_valid_quad(m_zone.mesh.quads[q]);
+    const std::vector<char> near_invalid = near_invalid_vertices(valid);
     for(std::size_t q = 0; q < m_zone.mesh.quads.size(); ++q) {
       const Quad& Q = m_zone.mesh.quads[q];
       if(!m_zone.made_or_changed(Q)) continue;
-      const bool valid = m_zone.is_valid_quad(Q);
+      const bool valid_quad = valid[q] != 0;
       std::array<Point_2d, 4> P;
       for(int c = 0; c < 4; ++c) P[c] = m_zone.xy[Q[c]];
       bool bad_angle = false;
-      if(valid) {
+      if(valid_quad) {
         std::array<double, 4> a;
         for(int c = 0; c < 4; ++c) a[c] = corner_angle_degrees(P[(c + 3) % 4], P[c], P[(c + 1) % 4]);
         // only the angle of a corner under 45 degrees is forced, as the verifier has it: the
@@ -53,13 +59,14 @@ public:
           if((a[c] < 45.0 - verifier_slack || a[c] > 135.0 + verifier_slack) && !m_zone.forced_angle(Q[c], a[c]))
             bad_angle = true;
       }
-      if(!valid) ++m_zone.report.invalid_quads;
+      if(!valid_quad) ++m_zone.report.invalid_quads;
       if(bad_angle) {
         ++m_zone.report.bad_angle_quads;
         ++m_zone.report.bad_angle_quads_by_layer[q < m_zone.layer_begin[0] ? 0 : q < m_zone.layer_begin[1] ? 1 : 2];
       }
-      if(!valid || bad_angle) {
-        auto& requests = valid ? m_zone.requests.for_angles : m_zone.requests.for_validity;
+      const bool near = std::any_of(Q.begin(), Q.end(), [&](std::size_t v) { return near_invalid[v] != 0; });
+      if(!valid_quad || (bad_angle && !near)) {
+        auto& requests = valid_quad ? m_zone.requests.for_angles : m_zone.requests.for_validity;
         double size = HUGE_VAL; // of the finest cells the quad hangs from
         for(int c = 0; c < 4; ++c)
           if(Q[c] < m_zone.core_points) {
@@ -74,12 +81,32 @@ public:
           }
         // not for an invalid quad: a broken buffer's quads can span tens of cells each, and
         // their corners' cells suffice (their whole areas would ask for far more cells)
-        if(valid) request_over_area(P, size, requests);
+        if(valid_quad) request_over_area(P, size, requests);
       }
     }
   }
 
 private:
+  // by point: whether it is within two quads of a quad not `valid`
+  std::vector<char> near_invalid_vertices(const std::vector<char>& valid) const
+  {
+    std::vector<char> near(m_zone.mesh.points.size(), 0);
+    if(std::find(valid.begin(), valid.end(), 0) == valid.end()) return near;
+    for(std::size_t q = 0; q < valid.size(); ++q)
+      if(!valid[q])
+        for(std::size_t v : m_zone.mesh.quads[q]) near[v] = 1;
+    const Vertex_quads quads_at(m_zone.mesh.quads, m_zone.mesh.points.size());
+    for(int ring = 0; ring < 2; ++ring) {
+      std::vector<char> next = near;
+      for(std::size_t v = 0; v < near.size(); ++v)
+        if(near[v])
+          for(std::size_t q : quads_at[v])
+            for(std::size_t w : m_zone.mesh.quads[q]) next[w] = 1;
+      near.swap(next);
+    }
+    return near;
+  }
+
   // A buffer quad is about as large as the cells it hangs from. One far larger spans a stretch
   // the core does not reach (the clearance peeled a strip one cell thick from a dead end), and
   // refining at its corners does not bring the core back: requests at cells' spacing over the

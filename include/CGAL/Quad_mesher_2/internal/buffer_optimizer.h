@@ -106,22 +106,29 @@ public:
   void optimize(const std::vector<std::size_t>& fixed_points, int passes = 12)
   {
     const std::vector<std::size_t> movable = movable_vertices();
-    // Two courses, the better one kept: moves lowering the excess from the start, and the
-    // min-max moves first, then those lowering the excess around the quads still out. Where
-    // the moves lock each other the order decides, and each course mends quads the other
-    // leaves out.
-    const std::vector<Point_2d> start = positions(movable);
+    // Two courses: moves lowering the excess from the start, and the min-max moves first,
+    // then those lowering the excess around the quads still out; the second is kept if it is
+    // better. Where the moves lock each other the order decides, and each course mends quads
+    // the other leaves out. Elsewhere the second would repeat the first's moves: it starts
+    // afresh only within three quads of those the first left out or invalid.
+    const std::vector<Point_2d> start = m_zone.xy;
     m_by_excess = true;
     run_passes(movable, passes);
-    const Local excess_first = outcome();
-    const std::vector<Point_2d> excess_first_xy = positions(movable);
-    restart(movable, start, 1);
-    m_by_excess = false;
-    run_passes(movable, passes);
-    m_by_excess = true;
-    for(std::size_t v : ring(vertices_of_quads_out())) m_dirty[v] = 1;
-    run_passes(movable, passes);
-    if(excess_first < outcome()) restart(movable, excess_first_xy, 0); // where its passes ended
+    const std::vector<std::size_t> redo = ring(ring(ring(vertices_of_quads_out(true))));
+    if(!redo.empty()) {
+      const Local excess_first = outcome();
+      const std::vector<Point_2d> excess_first_xy = m_zone.xy;
+      restart(redo, start);
+      m_by_excess = false;
+      run_passes(movable, passes);
+      m_by_excess = true;
+      for(std::size_t v : ring(vertices_of_quads_out(false))) m_dirty[v] = 1;
+      run_passes(movable, passes);
+      if(!(outcome() < excess_first)) { // where its passes ended: no vertex is to be tried
+        m_zone.xy = excess_first_xy;
+        std::fill(m_dirty.begin(), m_dirty.end(), 0);
+      }
+    }
     const std::vector<std::size_t> repair = repair_vertices(fixed_points);
     std::vector<Point_2d> before(repair.size());
     for(std::size_t k = 0; k < repair.size(); ++k) before[k] = m_zone.xy[repair[k]];
@@ -202,9 +209,12 @@ private:
   {
     Local r;
     r.by_excess = m_by_excess;
+    bool convex = true;
     for(std::size_t q : m_quads_at[v]) {
       const Quad& Q = m_zone.mesh.quads[q];
-      r.add(m_zone.quad_cost(Q), m_zone, Q);
+      const double b = m_zone.quad_cost(Q);
+      convex = convex && b < 1000.0;
+      r.add(b, m_zone, Q);
       const int c = corner_of(Q, v);
       // an edge collapsing to a point keeps the angles fine but merges two vertices: the
       // whole-mesh check rejects vertices within 1e-9 of the diagonal
@@ -214,7 +224,7 @@ private:
       }
       if(bound != nullptr && !(r < *bound)) return r;
     }
-    if(folded_at(v)) r.invalid += 1 << 20;
+    if(folded_at(v, convex)) r.invalid += 1 << 20;
     return r;
   }
 
@@ -223,8 +233,10 @@ private:
   // point sliding on the boundary adds the outside's corner and must lie between its two
   // neighbours on the edge (they make an obtuse angle at it: on its edge a straight one); the
   // core's boundary vertices are not checked. A zero-length edge, or corners that make no
-  // closed chain, are a fold.
-  bool folded_at(std::size_t v) const
+  // closed chain, are a fold. With `convex` (every quad at v strictly convex, its corner at v
+  // under 180 degrees), a closed chain of at most four such corners, or two and the
+  // outside's, sums to under 720 degrees: it winds once, and no angle need be summed.
+  bool folded_at(std::size_t v, bool convex) const
   {
     const auto slide = m_zone.slides.find(v);
     if(slide == m_zone.slides.end() && m_zone.is_core_boundary(v)) return false;
@@ -235,6 +247,7 @@ private:
       const auto& n = slide->second.neighbors;
       if(Approximate_kernel().angle_2_object()(m_zone.xy[n[0]], p, m_zone.xy[n[1]]) != OBTUSE) return true;
     }
+    if(convex && m_quads_at[v].size() <= (slide == m_zone.slides.end() ? 4u : 2u)) return false;
     std::vector<std::pair<Point_2d, Point_2d>>& corners = m_wedge_points;
     corners.clear();
     for(const Wedge& w : chain) {
@@ -358,31 +371,25 @@ private:
     return r;
   }
 
-  std::vector<Point_2d> positions(const std::vector<std::size_t>& vertices) const
+  // `vertices` back at their place in `xy` and to be tried, no other vertex
+  void restart(const std::vector<std::size_t>& vertices, const std::vector<Point_2d>& xy)
   {
-    std::vector<Point_2d> xy(vertices.size());
-    for(std::size_t k = 0; k < vertices.size(); ++k) xy[k] = m_zone.xy[vertices[k]];
-    return xy;
-  }
-
-  // the vertices back at `xy`, to be tried again (`dirty`) or not
-  void restart(const std::vector<std::size_t>& vertices, const std::vector<Point_2d>& xy, char dirty)
-  {
-    for(std::size_t k = 0; k < vertices.size(); ++k) {
-      m_zone.xy[vertices[k]] = xy[k];
-      m_dirty[vertices[k]] = dirty;
-    }
+    std::fill(m_dirty.begin(), m_dirty.end(), 0);
     std::fill(m_dirty_next.begin(), m_dirty_next.end(), 0);
+    for(std::size_t v : vertices) {
+      m_zone.xy[v] = xy[v];
+      m_dirty[v] = 1;
+    }
   }
 
-  // the vertices of the quads the buffer stages made or changed that are valid but outside
-  // [45, 135]
-  std::vector<std::size_t> vertices_of_quads_out() const
+  // the vertices of the quads the buffer stages made or changed that are outside [45, 135],
+  // and `with_invalid` or valid
+  std::vector<std::size_t> vertices_of_quads_out(bool with_invalid) const
   {
     std::vector<std::size_t> out;
     for(const Quad& q : m_zone.mesh.quads) {
       const double b = m_zone.made_or_changed(q) ? m_zone.quad_cost(q) : 0.0;
-      if(b > 45.0 + angle_tolerance && b < 1000.0) out.insert(out.end(), q.begin(), q.end());
+      if(b > 45.0 + angle_tolerance && (with_invalid || b < 1000.0)) out.insert(out.end(), q.begin(), q.end());
     }
     return out;
   }
@@ -405,7 +412,7 @@ private:
   // angles out of range.
   std::vector<std::size_t> repair_vertices(const std::vector<std::size_t>& fixed_points) const
   {
-    std::vector<std::size_t> near_bad = ring(ring(vertices_of_quads_out()));
+    std::vector<std::size_t> near_bad = ring(ring(vertices_of_quads_out(false)));
     std::vector<char> fixed(m_zone.mesh.points.size(), 0);
     for(std::size_t v : fixed_points) if(v < fixed.size()) fixed[v] = 1;
     near_bad.erase(std::remove_if(near_bad.begin(), near_bad.end(), [&](std::size_t x) {

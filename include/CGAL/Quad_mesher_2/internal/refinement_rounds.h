@@ -16,7 +16,7 @@ namespace internal {
 /// angles. Each round refines only where quads were out, so a domain with many small features
 /// needs many rounds: the angle rounds go on while they lower the count of quads with an
 /// unforced angle out, and for at most `max_stalled` valid rounds that do not (the next, finer
-/// strip may be paired better). Invalid rounds are refined for validity and count for neither.
+/// strip may be paired better). Invalid rounds are refined for validity and angles alike and count for neither.
 class Angle_rounds
 {
 public:
