@@ -67,14 +67,24 @@ public:
     }
   }
 
+  // Up to eight passes over the F points. A try at F_i reads F and G at i and its two
+  // neighbours only: it is made again only once one of them has moved (same moves, far fewer
+  // tries).
   void smooth()
   {
     if(n < 3) return;
     for(std::size_t i = 0; i < n; ++i) find_reach(i);
+    std::vector<char> dirty(n, 1);
     for(int pass = 0; pass < 8; ++pass) {
       bool moved = false;
-      for(std::size_t i = 0; i < n; ++i)
-        if(reach[i] != 0 && try_move(i)) moved = true;
+      for(std::size_t i = 0; i < n; ++i) {
+        if(reach[i] == 0 || !dirty[i]) continue;
+        dirty[i] = 0;
+        if(try_move(i)) {
+          moved = true;
+          dirty[(i + n - 1) % n] = dirty[i] = dirty[(i + 1) % n] = 1;
+        }
+      }
       if(!moved) break;
     }
   }
