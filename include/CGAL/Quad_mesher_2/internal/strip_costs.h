@@ -28,7 +28,16 @@ class Strip_quad_costs : Buffer_tolerances
 public:
   explicit Strip_quad_costs(const Buffer_zone<K>& zone) : m_zone(zone) {}
 
-  double cost(const Quad& q) const { return q[0] == none ? 2000.0 : m_zone.quad_cost(q); }
+  // A quad's cost (Buffer_zone::quad_cost()); 1000, as a flat corner, where a boundary node
+  // that is no input vertex has over 135 degrees between two others: it slides only along its
+  // input edge, so the angle stays nearly straight (the boundary's own), though rounding far
+  // from the origin lets it pass as convex.
+  double cost(const Quad& q) const
+  {
+    if(q[0] == none) return 2000.0;
+    const double b = m_zone.quad_cost(q);
+    return b > 45.0 + angle_tolerance && b < 1000.0 && flat_fan_corner(q) >= 0 ? 1000.0 : b;
+  }
 
   // A quad's cost in the strip's pairing: an angle out of [45, 135] at a boundary node between
   // two others (the middle of a fan of boundary edges) is the boundary's own angle there,
@@ -53,6 +62,18 @@ public:
       if(!on_boundary_chain(v) || !on_boundary_chain(u) || !on_boundary_chain(w)) continue;
       const double angle = corner_angle_degrees(m_zone.xy[u], m_zone.xy[v], m_zone.xy[w]);
       if(std::abs(angle - 90.0) > 45.0 + angle_tolerance && !m_zone.forced_angle(v, angle)) return k;
+    }
+    return -1;
+  }
+
+  // the corner (0 to 3) of q at a boundary node between two others that is no input vertex,
+  // with over 135 degrees, or -1
+  int flat_fan_corner(const Quad& q) const
+  {
+    for(int k = 0; k < 4; ++k) {
+      const std::size_t v = q[k], u = q[(k + 3) % 4], w = q[(k + 1) % 4];
+      if(m_zone.is_input_vertex(v) || !on_boundary_chain(v) || !on_boundary_chain(u) || !on_boundary_chain(w)) continue;
+      if(corner_angle_degrees(m_zone.xy[u], m_zone.xy[v], m_zone.xy[w]) > 135.0 + angle_tolerance) return k;
     }
     return -1;
   }
