@@ -99,14 +99,19 @@ Domain two_discs(double width)
 // a 32-gon 1e-4 across, 1e5 from the origin
 Domain tiny_far_disc() { return polygons({disc(1e5, 1e5, 0.5e-4, 32)}); }
 
-Domain load(const std::string& relative)
+Domain read_or_fail(const std::string& file)
 {
   Domain d;
   std::string err;
-  const std::string file = std::string(QM2_SHARED_DATA_DIR) + "/" + relative;
   EXPECT_TRUE(QM::IO::read_domain(file, d, &err)) << err;
   return d;
 }
+
+// a case of ../shared/data
+Domain load(const std::string& relative) { return read_or_fail(std::string(QM2_SHARED_DATA_DIR) + "/" + relative); }
+
+// a case of test/data
+Domain load_test_data(const std::string& name) { return read_or_fail(std::string(QM2_TEST_DATA_DIR) + "/" + name); }
 
 // ---- independent checks of a whole-domain mesh ---------------------------------------------
 
@@ -849,9 +854,8 @@ TEST(Buffer_layers, bird_and_its_mirror_image_meet_45_135_but_at_sharp_corners)
 // next node, left 22.5 and 157.5 degrees beside the tip round after round (exit status 4).
 TEST(Buffer_layers, a_needle_tip_node_slides_up_to_the_quads_it_serves)
 {
-  Domain d;
-  std::string err;
-  ASSERT_TRUE(QM::IO::read_domain(std::string(QM2_TEST_DATA_DIR) + "/random_twoopt_1_22.poly", d, &err)) << err;
+  const Domain d = load_test_data("random_twoopt_1_22.poly");
+  ASSERT_FALSE(d.points.empty());
   Mesher mesher(d);
   const Mesh m = mesher.run(Stage::BUFFER2);
   check_whole_domain(d, m, "random 2-opt needle");
@@ -868,9 +872,8 @@ TEST(Buffer_layers, a_flat_fan_far_from_the_origin_is_taken_out)
 {
   if(qm2_test::exact_constructions)
     GTEST_SKIP() << "the Epick run covers it (3 s)";
-  Domain d;
-  std::string err;
-  ASSERT_TRUE(QM::IO::read_domain(std::string(QM2_TEST_DATA_DIR) + "/random_twoopt_3_97.poly", d, &err)) << err;
+  const Domain d = load_test_data("random_twoopt_3_97.poly");
+  ASSERT_FALSE(d.points.empty());
   Mesher mesher(d);
   const Mesh m = mesher.run(Stage::BUFFER2);
   check_whole_domain(d, m, "random 2-opt far from the origin");
@@ -887,9 +890,8 @@ TEST(Buffer_layers, a_flat_fan_far_from_the_origin_is_taken_out)
 // opens in the first round; before, four stayed out and waited for refinement rounds.
 TEST(Buffer_layers, a_fan_at_a_notch_opens_in_the_first_round)
 {
-  Domain d;
-  std::string err;
-  ASSERT_TRUE(QM::IO::read_domain(std::string(QM2_TEST_DATA_DIR) + "/random_star_5_31.poly", d, &err)) << err;
+  const Domain d = load_test_data("random_star_5_31.poly");
+  ASSERT_FALSE(d.points.empty());
   const Loops loops = QM::extract_loops(d);
   Mesher mesher(d);
   mesher.build_quadtree();
@@ -1090,9 +1092,8 @@ TEST(Buffer_layers, an_invalid_round_refines_at_its_invalid_quads_only)
 {
   if(qm2_test::exact_constructions)
     GTEST_SKIP() << "the Epick run covers it (12 s)";
-  Domain d;
-  std::string err;
-  ASSERT_TRUE(QM::IO::read_domain(std::string(QM2_TEST_DATA_DIR) + "/ellipse_holes_250.poly", d, &err)) << err;
+  const Domain d = load_test_data("ellipse_holes_250.poly");
+  ASSERT_FALSE(d.points.empty());
   Mesher mesher(d);
   Mesh m;
   ASSERT_NO_THROW(m = mesher.run(Stage::BUFFER2));
@@ -1758,9 +1759,8 @@ TEST(Buffer_layers, the_rounds_end_when_their_refinement_splits_no_cell)
 // (random_star_5_31 takes two rounds; naca0012_sharp, which took three, now takes one)
 TEST(Buffer_layers, the_round_observer_sees_every_round_as_it_ends)
 {
-  Domain d;
-  std::string err;
-  ASSERT_TRUE(QM::IO::read_domain(std::string(QM2_TEST_DATA_DIR) + "/random_star_5_31.poly", d, &err)) << err;
+  const Domain d = load_test_data("random_star_5_31.poly");
+  ASSERT_FALSE(d.points.empty());
   Mesher mesher(d);
   std::vector<Mesher::Round_figures> seen;
   mesher.set_round_observer([&](const Mesher::Round_figures& f) {
@@ -1803,9 +1803,8 @@ TEST(Buffer_layers, the_round_observer_sees_every_round_as_it_ends)
 // a valid round more with the angle out
 TEST(Buffer_layers, an_invalid_round_is_refined_at_its_angles_out_too)
 {
-  Domain d;
-  std::string err;
-  ASSERT_TRUE(QM::IO::read_domain(std::string(QM2_TEST_DATA_DIR) + "/random_convex_2_20.poly", d, &err)) << err;
+  const Domain d = load_test_data("random_convex_2_20.poly");
+  ASSERT_FALSE(d.points.empty());
   Mesher mesher(d);
   mesher.run(Stage::BUFFER2);
   const auto& figures = mesher.round_figures();

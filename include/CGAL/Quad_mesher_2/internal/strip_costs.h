@@ -36,7 +36,7 @@ public:
   {
     if(q[0] == none) return 2000.0;
     const double b = m_zone.quad_cost(q);
-    return b > 45.0 + angle_tolerance && b < 1000.0 && flat_fan_corner(q) >= 0 ? 1000.0 : b;
+    return b > 45.0 + angle_tolerance && b < 1000.0 && fixed_angle_out_of_range(q, true) >= 0 ? 1000.0 : b;
   }
 
   // A quad's cost in the strip's pairing: an angle out of [45, 135] at a boundary node between
@@ -54,26 +54,16 @@ public:
   }
 
   // the corner (0 to 3) of q at a boundary node between two others whose angle is out of
-  // [45, 135] and not forced, or -1
-  int fixed_angle_out_of_range(const Quad& q) const
+  // [45, 135] and not forced, with `sliding_only` at a node that is no input vertex, or -1
+  int fixed_angle_out_of_range(const Quad& q, bool sliding_only = false) const
   {
     for(int k = 0; k < 4; ++k) {
       const std::size_t v = q[k], u = q[(k + 3) % 4], w = q[(k + 1) % 4];
-      if(!on_boundary_chain(v) || !on_boundary_chain(u) || !on_boundary_chain(w)) continue;
+      if((sliding_only && m_zone.is_input_vertex(v)) || !on_boundary_chain(v) || !on_boundary_chain(u)
+         || !on_boundary_chain(w))
+        continue;
       const double angle = corner_angle_degrees(m_zone.xy[u], m_zone.xy[v], m_zone.xy[w]);
       if(std::abs(angle - 90.0) > 45.0 + angle_tolerance && !m_zone.forced_angle(v, angle)) return k;
-    }
-    return -1;
-  }
-
-  // the corner (0 to 3) of q at a boundary node between two others that is no input vertex,
-  // with over 135 degrees, or -1
-  int flat_fan_corner(const Quad& q) const
-  {
-    for(int k = 0; k < 4; ++k) {
-      const std::size_t v = q[k], u = q[(k + 3) % 4], w = q[(k + 1) % 4];
-      if(m_zone.is_input_vertex(v) || !on_boundary_chain(v) || !on_boundary_chain(u) || !on_boundary_chain(w)) continue;
-      if(corner_angle_degrees(m_zone.xy[u], m_zone.xy[v], m_zone.xy[w]) > 135.0 + angle_tolerance) return k;
     }
     return -1;
   }
