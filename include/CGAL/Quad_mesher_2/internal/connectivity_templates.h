@@ -69,7 +69,7 @@ public:
     if(!notch.found && !m_zone.near_input_corner(notch.b))
       consider(notch.barely_out_start());
     if(!notch.found) return;
-    pattern_search(notch.best_y, notch.s, consider);
+    pattern_search(notch.best_y, notch.s, notch.best, consider);
     // Y is a core point like the others (the first buffer points come after the core's)
     const std::size_t y = m_zone.add_core_point(notch.best_y, m_zone.local_size[notch.b], true);
     m_zone.on_cycle_mark[notch.b] = 0;
@@ -120,7 +120,7 @@ public:
     };
     Point_2d centre = CGAL::midpoint(CGAL::midpoint(m_zone.xy[a], m_zone.xy[c1]), CGAL::midpoint(m_zone.xy[b], m_zone.xy[x]));
     double least = worst(centre);
-    pattern_search(centre, length_2d(m_zone.xy[x] - m_zone.xy[b]), [&](const Point_2d& o) {
+    pattern_search(centre, length_2d(m_zone.xy[x] - m_zone.xy[b]), least, [&](const Point_2d& o) {
       const double w = worst(o);
       if(!(w < least)) return false;
       least = w;
@@ -197,7 +197,7 @@ private:
           const double p = penalty(y);
           if(p < least) { least = p; start = y; }
         }
-      pattern_search(start, s, [&](const Point_2d& y) {
+      pattern_search(start, s, least, [&](const Point_2d& y) {
         const double p = penalty(y);
         if(!(p < least)) return false;
         least = p;

@@ -395,7 +395,8 @@ private:
 
   // A fan of boundary edges that is flat (its middle node is no input vertex and lies on a
   // straight piece of the boundary) cannot be made a quad: such a node is taken out and the
-  // strip paired again.
+  // strip paired again, while that lowers the strip's cost (the pairing may put the node
+  // back as a gap's extra node: the same strip again).
   void take_out_flat_fans(Strip_nodes& strip, Strip_result& best)
   {
     std::vector<std::size_t>& gid = strip.gid;
@@ -427,6 +428,7 @@ private:
         if(remove != none) removed.push_back(remove);
       }
       if(removed.empty()) break;
+      const Strip_nodes before = strip;
       std::sort(removed.rbegin(), removed.rend());
       removed.erase(std::unique(removed.begin(), removed.end()), removed.end());
       auto erase_node = [&](std::size_t remove) {
@@ -449,7 +451,12 @@ private:
         }
         if(extra != none) erase_node(extra);
       }
-      best = pair_strip_nodes(strip);
+      Strip_result paired = pair_strip_nodes(strip);
+      if(!(paired.cost < best.cost)) {
+        strip = before;
+        break;
+      }
+      best = std::move(paired);
     }
   }
 

@@ -46,16 +46,18 @@ const std::array<Vector_2d, N>& unit_directions()
 // replaces by p if p is better (and then returns true): 16 directions at a step from a
 // twentieth of `scale` down to 1e-10 of it, doubled after a move and halved after none. At
 // most 400 tries of the 16: along a ridge of the angles' maximum the moves can be tiny and
-// many.
+// many. It ends once `best`, the excess consider() lowers, is 0: no point can beat that.
 template <class Consider>
-void pattern_search(const Point_2d& at, double scale, const Consider& consider)
+void pattern_search(const Point_2d& at, double scale, const double& best, const Consider& consider)
 {
   double step = 0.05 * scale;
   for(int i = 0; i < 400 && step > 1e-10 * scale; ++i) {
     const Point_2d from = at;
     bool moved = false;
-    for(const Vector_2d& d : unit_directions<16>())
+    for(const Vector_2d& d : unit_directions<16>()) {
       moved = consider(from + step * d) || moved;
+      if(best == 0) return;
+    }
     step = moved ? (std::min)(2 * step, 0.05 * scale) : step / 2;
   }
 }
@@ -70,17 +72,26 @@ class Template_search : Buffer_tolerances
 public:
   explicit Template_search(Buffer_zone<K>& zone) : m_zone(zone) {}
 
-  // search_boundary_vertex() on every core boundary vertex, in rounds while one moves
+  // search_boundary_vertex() on every core boundary vertex, in rounds while one moves. A
+  // search depends on the points within three quads of its vertex only (its neighbours on
+  // the cycle, its quads, the interior that may give way and their quads): after the first
+  // round, a vertex none of them moved since its last search would end where it did.
   void search_boundary_vertices(const Vertex_quads& quads_at)
   {
+    m_moved_at.assign(m_zone.mesh.points.size(), 0);
+    std::vector<std::size_t> searched_at(m_zone.mesh.points.size(), 0);
     for(int round = 0; round < 3; ++round) {
       bool changed = false;
       for(const auto& cyc : m_zone.cycles) {
         const std::size_t n = cyc.size();
-        for(std::size_t i = 0; i < n; ++i)
-          if(search_boundary_vertex(cyc[(i + n - 2) % n], cyc[(i + n - 1) % n], cyc[i],
-                                    cyc[(i + 1) % n], cyc[(i + 2) % n], quads_at))
+        for(std::size_t i = 0; i < n; ++i) {
+          const std::size_t b = cyc[i];
+          if(round > 0 && !moved_near(b, searched_at[b], quads_at)) continue;
+          searched_at[b] = ++m_clock;
+          if(search_boundary_vertex(cyc[(i + n - 2) % n], cyc[(i + n - 1) % n], b, cyc[(i + 1) % n],
+                                    cyc[(i + 2) % n], quads_at))
             changed = true;
+        }
       }
       if(!changed) break;
     }
@@ -90,6 +101,21 @@ public:
   }
 
 private:
+  // whether a point within three quads of b moved after time `since`
+  bool moved_near(std::size_t b, std::size_t since, const Vertex_quads& quads_at) const
+  {
+    std::vector<std::size_t> near{ b };
+    for(int ring = 0; ring < 3; ++ring) {
+      const std::size_t reached = near.size();
+      for(std::size_t k = 0; k < reached; ++k)
+        for(std::size_t q : quads_at[near[k]])
+          near.insert(near.end(), m_zone.mesh.quads[q].begin(), m_zone.mesh.quads[q].end());
+      std::sort(near.begin(), near.end());
+      near.erase(std::unique(near.begin(), near.end()), near.end());
+    }
+    return std::any_of(near.begin(), near.end(), [&](std::size_t v) { return m_moved_at[v] > since; });
+  }
+
   // A core boundary vertex b still out of [112.5, 225] after the bisector steps (a2, a, b, c,
   // c2 consecutive on its cycle): on adaptive cores its quads are not the lattice's, and the
   // step its buffer-side angle needs is neither along the bisector nor one of the lattice's.
@@ -120,9 +146,9 @@ private:
       return true;
     };
     for(double r : { 0.05, 0.1, 0.2, 0.3, 0.45, 0.6 })
-      for(int k = 0; k < 12; ++k)
+      for(int k = 0; k < 12 && best > 0; ++k)
         consider(ring(r, k));
-    pattern_search(best_p, e, consider);
+    pattern_search(best_p, e, best, consider);
     bool reshaped = false;
     if(buffer_angle_excess(right_side_angle(m_zone.xy[a], best_p, m_zone.xy[c])) > angle_tolerance) {
       std::vector<std::pair<double, Point_2d>> targets; // in order of distance
@@ -144,7 +170,7 @@ private:
         if(reshaped) {
           best = targets[t].first;
           best_p = targets[t].second;
-          pattern_search(best_p, e, consider);
+          pattern_search(best_p, e, best, consider);
         }
         m_zone.xy[b] = old;
       }
@@ -152,6 +178,7 @@ private:
     if(best_p == old) return false;
     m_zone.xy[b] = best_p;
     m_zone.mesh.points[b] = m_zone.mesh_point(best_p);
+    m_moved_at[b] = ++m_clock;
     ++m_zone.report.searched_vertices;
     return true;
   }
@@ -208,8 +235,8 @@ private:
         };
         for(double r : { 0.05, 0.1, 0.2 })
           for(const Vector_2d& u : unit_directions<12>())
-            consider(old + (r * e) * u);
-        pattern_search(best_p, e, consider);
+            if(best > 0) consider(old + (r * e) * u);
+        pattern_search(best_p, e, best, consider);
         m_zone.xy[v] = best_p;
         moved = moved || best_p != old;
       }
@@ -351,6 +378,7 @@ private:
       if(m_zone.xy[v] == before[k]) continue;
       if(ok) {
         m_zone.mesh.points[v] = m_zone.mesh_point(m_zone.xy[v]);
+        if(v < m_moved_at.size()) m_moved_at[v] = ++m_clock;
         m_zone.report.shaped_interior += m_zone.shaped_mark[v] == 0 ? 1 : 0;
         m_zone.shaped_mark[v] = 1;
       } else {
@@ -361,6 +389,8 @@ private:
   }
 
   Buffer_zone<K>& m_zone;
+  std::vector<std::size_t> m_moved_at; // per point: when a search last moved it (m_clock)
+  std::size_t m_clock = 0;
 };
 
 } // namespace internal
