@@ -42,16 +42,25 @@ const std::array<Vector_2d, N>& unit_directions()
   return directions;
 }
 
+// The largest step under which every point `step` or less from p rounds to p itself: half
+// the spacing of doubles below each coordinate's magnitude, the smaller.
+inline double rounding_step(const Point_2d& p)
+{
+  auto spacing_below = [](double v) { v = std::abs(v); return v - std::nextafter(v, 0.0); };
+  return 0.5 * (std::min)(spacing_below(p.x()), spacing_below(p.y()));
+}
+
 // A pattern search in the plane about `at`, the best point so far, which `consider(p)`
 // replaces by p if p is better (and then returns true): 16 directions at a step from a
 // twentieth of `scale` down to 1e-10 of it, doubled after a move and halved after none. At
 // most 400 tries of the 16: along a ridge of the angles' maximum the moves can be tiny and
-// many. It ends once `best`, the excess consider() lowers, is 0: no point can beat that.
+// many. It ends once `best`, the excess consider() lowers, is 0: no point can beat that; and
+// once a step would round back to `at` (far from the origin, well before 1e-10 of `scale`).
 template <class Consider>
 void pattern_search(const Point_2d& at, double scale, const double& best, const Consider& consider)
 {
   double step = 0.05 * scale;
-  for(int i = 0; i < 400 && step > 1e-10 * scale; ++i) {
+  for(int i = 0; i < 400 && step > 1e-10 * scale && step >= rounding_step(at); ++i) {
     const Point_2d from = at;
     bool moved = false;
     for(const Vector_2d& d : unit_directions<16>()) {
@@ -75,19 +84,19 @@ public:
   // search_boundary_vertex() on every core boundary vertex, in rounds while one moves. A
   // search depends on the points within three quads of its vertex only (its neighbours on
   // the cycle, its quads, the interior that may give way and their quads): after the first
-  // round, a vertex none of them moved since its last search would end where it did.
+  // round, a vertex none of them moved since its last search would end where it did. A move
+  // marks the vertices within three quads of it (the relation is symmetric) to search again.
   void search_boundary_vertices(const Vertex_quads& quads_at)
   {
-    m_moved_at.assign(m_zone.mesh.points.size(), 0);
-    std::vector<std::size_t> searched_at(m_zone.mesh.points.size(), 0);
+    m_search_again.assign(m_zone.mesh.points.size(), 1);
     for(int round = 0; round < 3; ++round) {
       bool changed = false;
       for(const auto& cyc : m_zone.cycles) {
         const std::size_t n = cyc.size();
         for(std::size_t i = 0; i < n; ++i) {
           const std::size_t b = cyc[i];
-          if(round > 0 && !moved_near(b, searched_at[b], quads_at)) continue;
-          searched_at[b] = ++m_clock;
+          if(!m_search_again[b]) continue;
+          m_search_again[b] = 0;
           if(search_boundary_vertex(cyc[(i + n - 2) % n], cyc[(i + n - 1) % n], b, cyc[(i + 1) % n],
                                     cyc[(i + 2) % n], quads_at))
             changed = true;
@@ -101,10 +110,10 @@ public:
   }
 
 private:
-  // whether a point within three quads of b moved after time `since`
-  bool moved_near(std::size_t b, std::size_t since, const Vertex_quads& quads_at) const
+  // marks every vertex within three quads of moved point v to be searched again
+  void moved(std::size_t v, const Vertex_quads& quads_at)
   {
-    std::vector<std::size_t> near{ b };
+    std::vector<std::size_t> near{ v };
     for(int ring = 0; ring < 3; ++ring) {
       const std::size_t reached = near.size();
       for(std::size_t k = 0; k < reached; ++k)
@@ -113,7 +122,7 @@ private:
       std::sort(near.begin(), near.end());
       near.erase(std::unique(near.begin(), near.end()), near.end());
     }
-    return std::any_of(near.begin(), near.end(), [&](std::size_t v) { return m_moved_at[v] > since; });
+    for(std::size_t w : near) m_search_again[w] = 1;
   }
 
   // A core boundary vertex b still out of [112.5, 225] after the bisector steps (a2, a, b, c,
@@ -178,7 +187,7 @@ private:
     if(best_p == old) return false;
     m_zone.xy[b] = best_p;
     m_zone.mesh.points[b] = m_zone.mesh_point(best_p);
-    m_moved_at[b] = ++m_clock;
+    moved(b, quads_at);
     ++m_zone.report.searched_vertices;
     return true;
   }
@@ -378,7 +387,7 @@ private:
       if(m_zone.xy[v] == before[k]) continue;
       if(ok) {
         m_zone.mesh.points[v] = m_zone.mesh_point(m_zone.xy[v]);
-        if(v < m_moved_at.size()) m_moved_at[v] = ++m_clock;
+        if(v < m_search_again.size()) moved(v, quads_at);
         m_zone.report.shaped_interior += m_zone.shaped_mark[v] == 0 ? 1 : 0;
         m_zone.shaped_mark[v] = 1;
       } else {
@@ -389,8 +398,7 @@ private:
   }
 
   Buffer_zone<K>& m_zone;
-  std::vector<std::size_t> m_moved_at; // per point: when a search last moved it (m_clock)
-  std::size_t m_clock = 0;
+  std::vector<char> m_search_again; // per point: whether search_boundary_vertices() is to search it
 };
 
 } // namespace internal
