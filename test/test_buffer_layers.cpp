@@ -1816,6 +1816,23 @@ TEST(Buffer_layers, an_invalid_round_is_refined_at_its_angles_out_too)
   EXPECT_EQ(figures.back().bad_angle_quads, 0u);
 }
 
+// A random 2-opt polygon with four holes and a corner cut 0.0059 of its side
+// (random_sweep.py --seed 4, domain 67): the optimiser slid a boundary point so near the end
+// of its input edge that the edge meeting it there passed within the whole-mesh check's
+// tolerance, a node on the other side's edge: an invalid first round. A point sliding on an
+// input edge keeps the shortest edge's length from the edges at its ends.
+TEST(Buffer_layers, a_sliding_point_keeps_clear_of_the_next_input_edge)
+{
+  const Domain d = load_test_data("random_twoopt_4_67.poly");
+  ASSERT_FALSE(d.points.empty());
+  Mesher mesher(d);
+  const Mesh m = mesher.run(Stage::BUFFER2);
+  for(const auto& round : mesher.round_figures())
+    EXPECT_TRUE(round.valid) << "round " << round.round;
+  check_whole_domain(d, m, "random 2-opt with a corner cut");
+  expect_45_135_but_at_input_corners(d, m, "random 2-opt with a corner cut");
+}
+
 // The refinement template of the cell [0, 4]^2 (four corner squares and eight kites with 45
 // degrees at the centre (2, 2)) without its upper-left quadrant: the centre is a notch of the
 // core whose core angles are all 45 degrees, as Lake Superior's (0.8877, -0.6432) was.

@@ -23,6 +23,7 @@ namespace internal {
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Approximate_kernel;
 typedef Approximate_kernel::Point_2 Point_2d;
 typedef Approximate_kernel::Vector_2 Vector_2d;
+typedef Approximate_kernel::Segment_2 Segment_2d;
 
 /// The nearest double point to `p`, a point of the user's traits. The traits concept asks for
 /// coordinates with `to_double()`, not for a kernel, so this is not a `Cartesian_converter`.

@@ -225,7 +225,25 @@ private:
       if(bound != nullptr && !(r < *bound)) return r;
     }
     if(folded_at(v, convex)) r.invalid += 1 << 20;
+    if(near_next_input_edge(v)) ++r.invalid;
     return r;
+  }
+
+  // Whether v slides on an input edge within the shortest edge's length of an input edge
+  // meeting it at an end: beside a needle's tip or a slit's, where that edge folds back, a
+  // point near the tip is nearly on the other side too, and the whole-mesh check sees a node
+  // on the other side's edge.
+  bool near_next_input_edge(std::size_t v) const
+  {
+    const auto slide = m_zone.slides.find(v);
+    if(slide == m_zone.slides.end()) return false;
+    const auto& lv = m_zone.loops.loops[slide->second.loop].vertices;
+    const std::size_t n = lv.size(), e = slide->second.edge;
+    auto at = [&](std::size_t k) { return to_point_2d(m_zone.domain.points[lv[k % n]]); };
+    const auto distance2 = Approximate_kernel().compute_squared_distance_2_object();
+    const Point_2d& p = m_zone.xy[v];
+    return distance2(p, Segment_2d(at(e + n - 1), at(e))) < m_min_edge2
+           || distance2(p, Segment_2d(at(e + 1), at(e + 2))) < m_min_edge2;
   }
 
   // Whether the quads at v fold over each other, decided exactly on the working positions:
