@@ -1698,14 +1698,15 @@ TEST(Buffer_layers, stages_on_triangle_A)
 
 // run() returns the best valid round, kept from its round when a later angle round was worse:
 // the mesher's state must then be that round's, so the stages run again on its quadtree give
-// the same mesh and the same buffer report (Lake Superior takes four rounds and returns an
-// earlier one: the last was worse)
+// the same mesh and the same buffer report. (Lake Superior took four rounds and returned an
+// earlier one until its notch of 90 degrees facing a fan of three was filled; now it takes
+// two and returns the last, and no input at hand returns an earlier round.)
 TEST(Buffer_layers, the_returned_round_is_the_mesher_state)
 {
   const Domain d = load("lake_superior/lake_superior.poly");
   Mesher mesher(d);
   const Mesh m = mesher.run(Stage::BUFFER2);
-  ASSERT_GT(mesher.rounds(), 2);
+  ASSERT_GE(mesher.rounds(), 2);
   const auto report = mesher.buffer_report();
   Mesh again = mesher.core_mesh();
   mesher.clear_buffer_zone(again);

