@@ -1893,6 +1893,42 @@ TEST(Buffer_layers, a_notch_that_cannot_move_is_filled)
     }
 }
 
+// n x n squares of side `side` from (x0, y0), counter-clockwise
+void add_grid(Mesh& m, double x0, double y0, int n, double side)
+{
+  const std::size_t first = m.points.size();
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i) m.points.emplace_back(x0 + side * i, y0 + side * j);
+  auto at = [&](int i, int j) { return first + std::size_t(j * (n + 1) + i); };
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i) m.quads.push_back({ at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1) });
+}
+
+// Two pieces of core following one loop, cut apart by a narrow passage (two 4 x 4 rooms
+// joined by a channel 0.8 wide, a piece of squares in each): the refinement is asked
+// across the passage, with cells under its half width, not along the smaller piece (which
+// grew, round after round, while the passage stayed closed: 87770 to 99230 quads in four
+// rounds on a random star, seed 4 domain 75, then rounds of a minute).
+TEST(Buffer_layers, a_core_cut_off_by_a_narrow_passage_is_refined_across_it)
+{
+  const Domain d = polygons({ { Point(0, 0), Point(4, 0), Point(4, 2.6), Point(6, 2.6), Point(6, 0), Point(10, 0),
+                                Point(10, 4), Point(6, 4), Point(6, 3.4), Point(4, 3.4), Point(4, 4), Point(0, 4) } });
+  const Loops loops = QM::extract_loops(d);
+  Mesh core;
+  add_grid(core, 1, 1, 2, 1.0);
+  add_grid(core, 7, 1.4, 1, 1.5); // (7, 2.9) nearest the other piece's (3, 3), across the channel
+  QM::internal::Buffer_layers<K> layers(core, std::vector<double>(core.points.size(), 1.0), d, loops, K());
+  EXPECT_FALSE(layers.match_loops());
+  std::size_t in_passage = 0;
+  for(const auto& [p, size] : layers.requests().for_validity)
+    if(p.x() > 4 && p.x() < 6) {
+      ++in_passage;
+      EXPECT_TRUE(p.y() > 2.6 && p.y() < 3.4) << p;
+      EXPECT_LE(size, 0.4) << p;
+    }
+  EXPECT_GE(in_passage, 1u);
+}
+
 // ---- 3. determinism -------------------------------------------------------------------------
 // (each binary has one kernel, so Epick and Epeck are not compared here: two runs must give
 // the same mesh, point for point)

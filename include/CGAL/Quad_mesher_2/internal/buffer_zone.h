@@ -27,6 +27,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <iterator>
 #include <limits>
 #include <memory>
 #include <string>
@@ -105,10 +106,12 @@ public:
       if(owner[l] != none || !same_turn || 2 * votes[l] <= cycles[c].size()) {
         ok = false;
         // the smaller of two cycles following one loop is a piece of core cut off by a
-        // narrow passage: refine along it
+        // narrow passage: refine along it, and across the passage (refining along the
+        // piece alone grew it, round after round, while the passage stayed closed)
         std::size_t cut = c;
         if(owner[l] != none && cycles[owner[l]].size() < cycles[c].size()) std::swap(cut, owner[l]);
         request_all(cut);
+        if(owner[l] != none) request_passage(cut, owner[l]);
         report.failure = "the core mesh's boundary does not follow the domain's loops one to one";
         continue;
       }
@@ -170,6 +173,47 @@ public:
   {
     for(std::size_t v : cycles[c])
       requests.for_validity.emplace_back(xy[v], local_size[v]);
+  }
+
+  // Along the shortest segment between cycle `piece`, core cut off by a narrow passage, and
+  // cycle `rest` on the same loop: cells half the distance to the boundary there (the
+  // passage's half width), or a quarter of the gap if that is less, at least a level finer.
+  void request_passage(std::size_t piece, std::size_t rest)
+  {
+    const std::pair<Point_2d, Point_2d> ends = nearest_approach(cycles[piece], cycles[rest]);
+    const double gap = length_2d(ends.second - ends.first);
+    for(double t : { 0.0, 0.25, 0.5, 0.75, 1.0 }) {
+      const Point_2d p = along_2d(ends.first, ends.second, t);
+      const double room = locator->closest(p, gap).dist;
+      requests.for_validity.emplace_back(p, (std::min)(gap / 2, std::isfinite(room) ? room : gap));
+    }
+  }
+
+  // the nearest pair of a vertex of `from` and one of `to`: a sweep over `to` in x order
+  std::pair<Point_2d, Point_2d> nearest_approach(const std::vector<std::size_t>& from,
+                                                 const std::vector<std::size_t>& to) const
+  {
+    std::vector<Point_2d> by_x;
+    by_x.reserve(to.size());
+    for(std::size_t v : to) by_x.push_back(xy[v]);
+    std::sort(by_x.begin(), by_x.end(), [](const Point_2d& a, const Point_2d& b) { return a.x() < b.x(); });
+    double best = std::numeric_limits<double>::infinity();
+    std::pair<Point_2d, Point_2d> ends(xy[from.front()], by_x.front());
+    for(std::size_t v : from) {
+      const Point_2d& p = xy[v];
+      const auto start = std::lower_bound(by_x.begin(), by_x.end(), p.x(),
+                                          [](const Point_2d& a, double x) { return a.x() < x; });
+      auto consider = [&](const Point_2d& q) {
+        const double dx = q.x() - p.x();
+        if(dx * dx >= best) return false; // and every point farther along in x
+        const double d2 = (q - p).squared_length();
+        if(d2 < best) { best = d2; ends = { p, q }; }
+        return true;
+      };
+      for(auto it = start; it != by_x.end() && consider(*it); ++it) {}
+      for(auto it = start; it != by_x.begin() && consider(*std::prev(it)); --it) {}
+    }
+    return ends;
   }
 
   // the traits' point at working position p: exactly p, whatever the kernel
