@@ -1893,15 +1893,19 @@ TEST(Buffer_layers, a_notch_that_cannot_move_is_filled)
     }
 }
 
+template <class Skip>
+std::vector<std::array<std::size_t, 4>> grid_quads(int nx, int ny, Skip skip);
+
 // n x n squares of side `side` from (x0, y0), counter-clockwise
 void add_grid(Mesh& m, double x0, double y0, int n, double side)
 {
   const std::size_t first = m.points.size();
   for(int j = 0; j <= n; ++j)
     for(int i = 0; i <= n; ++i) m.points.emplace_back(x0 + side * i, y0 + side * j);
-  auto at = [&](int i, int j) { return first + std::size_t(j * (n + 1) + i); };
-  for(int j = 0; j < n; ++j)
-    for(int i = 0; i < n; ++i) m.quads.push_back({ at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1) });
+  for(auto q : grid_quads(n, n, [](int, int) { return false; })) {
+    for(std::size_t& v : q) v += first;
+    m.quads.push_back(q);
+  }
 }
 
 // Two pieces of core following one loop, cut apart by a narrow passage (two 4 x 4 rooms

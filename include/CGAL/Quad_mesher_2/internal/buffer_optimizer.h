@@ -237,9 +237,9 @@ private:
   {
     const auto slide = m_zone.slides.find(v);
     if(slide == m_zone.slides.end()) return false;
-    const auto& lv = m_zone.loops.loops[slide->second.loop].vertices;
-    const std::size_t n = lv.size(), e = slide->second.edge;
-    auto at = [&](std::size_t k) { return to_point_2d(m_zone.domain.points[lv[k % n]]); };
+    const std::vector<Point_2d>& loop = m_zone.locator->loop(slide->second.loop);
+    const std::size_t n = loop.size(), e = slide->second.edge;
+    auto at = [&](std::size_t k) { return loop[k % n]; };
     const auto distance2 = Approximate_kernel().compute_squared_distance_2_object();
     const Point_2d& p = m_zone.xy[v];
     return distance2(p, Segment_2d(at(e + n - 1), at(e))) < m_min_edge2
@@ -540,9 +540,9 @@ private:
     // The neighbours must lie on this point's edge (or be its ends) for the chain to stay on
     // it: within 1e-9 of its length, or the rounding of its coordinates (points on a short
     // edge far from the origin are off its line by more than 1e-9 of it).
-    const auto& lv = m_zone.loops.loops[it->second.loop].vertices;
-    const Point_2d E0 = to_point_2d(m_zone.domain.points[lv[it->second.edge]]);
-    const Point_2d E1 = to_point_2d(m_zone.domain.points[lv[(it->second.edge + 1) % lv.size()]]);
+    const std::vector<Point_2d>& loop = m_zone.locator->loop(it->second.loop);
+    const Point_2d& E0 = loop[it->second.edge];
+    const Point_2d& E1 = loop[(it->second.edge + 1) % loop.size()];
     const Vector_2d e = E1 - E0;
     const double el = length_2d(e);
     const double magnitude = (std::max)({ std::abs(E0.x()), std::abs(E0.y()), std::abs(E1.x()), std::abs(E1.y()) });

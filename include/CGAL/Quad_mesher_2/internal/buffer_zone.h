@@ -184,8 +184,7 @@ public:
     const double gap = length_2d(ends.second - ends.first);
     for(double t : { 0.0, 0.25, 0.5, 0.75, 1.0 }) {
       const Point_2d p = along_2d(ends.first, ends.second, t);
-      const double room = locator->closest(p, gap).dist;
-      requests.for_validity.emplace_back(p, (std::min)(gap / 2, std::isfinite(room) ? room : gap));
+      requests.for_validity.emplace_back(p, (std::min)(gap / 2, locator->closest(p, gap).dist));
     }
   }
 

@@ -387,7 +387,7 @@ private:
       if(m_zone.xy[v] == before[k]) continue;
       if(ok) {
         m_zone.mesh.points[v] = m_zone.mesh_point(m_zone.xy[v]);
-        if(v < m_search_again.size()) moved(v, quads_at);
+        moved(v, quads_at);
         m_zone.report.shaped_interior += m_zone.shaped_mark[v] == 0 ? 1 : 0;
         m_zone.shaped_mark[v] = 1;
       } else {
