@@ -29,14 +29,33 @@ inline double buffer_angle_excess(double beta)
   return (std::max)(0.0, beta - 225.0) + (std::max)(0.0, 112.5 - beta);
 }
 
-// buffer_angle_excesses() of any number of buffer-side angles
-template <class Betas>
-double excess_score(const Betas& betas, bool count_first)
+// how far a buffer-side angle lies outside [112.5, 225] widened by half the angle tolerance
+// (what is within the tolerance counts as in)
+inline double widened_excess(double beta)
+{
+  return (std::max)(0.0, beta - (225.0 + Buffer_tolerances::angle_tolerance / 2))
+         + (std::max)(0.0, (112.5 - Buffer_tolerances::angle_tolerance / 2) - beta);
+}
+
+// widened_excess() of the angle on the right of a -> b -> c, 180 degrees plus the turn at b.
+// A turn well within (-67.5, 45) degrees (its tangent within the range's by more than the
+// rounding of an atan2) has none, told by its cross and dot products alone: the searches
+// cost this at every point they try, and most of the angles they watch are in range.
+inline double widened_excess_at(const Point_2d& a, const Point_2d& b, const Point_2d& c)
+{
+  const Vector_2d t1 = b - a, t2 = c - b;
+  const double cross = CGAL::determinant(t1, t2), dot = CGAL::scalar_product(t1, t2);
+  const double tan_45 = 1.0, tan_67_5 = 2.414213562373095; // 1 + sqrt(2)
+  if(dot > 0 && cross < dot * (tan_45 * (1 - 1e-10)) && cross > -dot * (tan_67_5 * (1 - 1e-10))) return 0.0;
+  return widened_excess(180.0 + std::atan2(cross, dot) * 180.0 / Buffer_tolerances::pi);
+}
+
+// Lemma 2's measure of buffer-side angles out of range, from their widened_excess()es.
+template <class Excesses>
+double score_of_excesses(const Excesses& excesses, bool count_first)
 {
   double out = 0, worst = 0, sum = 0;
-  for(double beta : betas) {
-    const double x = (std::max)(0.0, beta - (225.0 + Buffer_tolerances::angle_tolerance / 2))
-                     + (std::max)(0.0, (112.5 - Buffer_tolerances::angle_tolerance / 2) - beta);
+  for(double x : excesses) {
     out += x > 0 ? 1 : 0;
     worst = (std::max)(worst, x);
     sum += x;
@@ -45,15 +64,15 @@ double excess_score(const Betas& betas, bool count_first)
 }
 
 // How far the buffer-side angles at a, b and c (consecutive on a core cycle between a2 and
-// c2) lie outside [112.5, 225] widened by half the angle tolerance (what is within the
-// tolerance counts as in), in one number, so that a search lowering it by more than rounding
-// ends: how many are out first if `count_first` (a step of b that lets a neighbour out for a
-// smaller worst one leaves more out), then the worst, then a tenth of their sum.
+// c2) lie outside [112.5, 225] widened by half the angle tolerance, in one number, so that
+// a search lowering it by more than rounding ends: how many are out first if `count_first`
+// (a step of b that lets a neighbour out for a smaller worst one leaves more out), then the
+// worst, then a tenth of their sum.
 inline double buffer_angle_excesses(const Point_2d& a2, const Point_2d& a, const Point_2d& b,
                              const Point_2d& c, const Point_2d& c2, bool count_first = true)
 {
-  const std::array<double, 3> betas{ right_side_angle(a2, a, b), right_side_angle(a, b, c), right_side_angle(b, c, c2) };
-  return excess_score(betas, count_first);
+  const std::array<double, 3> excesses{ widened_excess_at(a2, a, b), widened_excess_at(a, b, c), widened_excess_at(b, c, c2) };
+  return score_of_excesses(excesses, count_first);
 }
 
 // the largest buffer_angle_excess() of the three buffer-side angles at a, b and c, which

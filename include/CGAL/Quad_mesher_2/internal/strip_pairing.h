@@ -55,6 +55,12 @@ struct Cost
     const double excess = (std::max)(0.0, b - 45.0);
     sum += b >= 1000.0 ? 1e12 : b * b + 100.0 * excess * excess;
   }
+  // adds the quads costed in `o`
+  void add(const Cost& o)
+  {
+    worst = (std::max)(worst, o.worst);
+    sum += o.sum;
+  }
 };
 
 struct Strip_result
@@ -91,7 +97,7 @@ class Strip_pairing
     bool ins;
     std::vector<Triangle> t;
     bool paired[2] = { false, false }; // by whether a pending triangle comes in
-    std::vector<double> pair_costs[2];
+    Cost own[2];                       // its own quads' cost, by the same
     int out[2] = { 0, 0 };
     std::array<double, 4> with_pending = { { -1, -1, -1, -1 } }; // by incoming state
   };
@@ -180,7 +186,7 @@ private:
             if(o.with_pending[s] < 0) o.with_pending[s] = m_strip_cost(merge(pending(r == 0 ? n - 1 : r - 1, s), t[0]));
             cst.add(o.with_pending[s]);
           }
-          for(double c : o.pair_costs[p]) cst.add(c);
+          cst.add(o.own[p]);
           const int out = o.out[p];
           if(cst < best[r + 1][out]) { best[r + 1][out] = cst; back[r + 1][out] = Step{ o.mid, s, o.ins }; }
         }
@@ -199,7 +205,8 @@ private:
   {
     const auto& t = o.t;
     std::size_t pos = std::size_t(p);
-    for(; pos + 1 < t.size(); pos += 2) o.pair_costs[p].push_back(m_strip_cost(merge(t[pos], t[pos + 1])));
+    o.own[p] = Cost{ 0, 0 };
+    for(; pos + 1 < t.size(); pos += 2) o.own[p].add(m_strip_cost(merge(t[pos], t[pos + 1])));
     const std::size_t k = m_k[r] + (o.ins ? 1 : 0);
     o.out[p] = pos == t.size() ? 0 : o.mid == k ? 1 : (o.ins && last_edge_extra(r)) ? 3 : 2;
     o.paired[p] = true;

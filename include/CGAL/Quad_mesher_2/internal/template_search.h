@@ -202,14 +202,16 @@ private:
     const std::size_t n = cyc.size();
     if(n < 8) return false;
     auto node = [&](int d) { return cyc[(i + 2 * n + d) % n]; };
-    auto beta_at = [&](int d) { return right_side_angle(m_zone.xy[node(d - 1)], m_zone.xy[node(d)], m_zone.xy[node(d + 1)]); };
-    if(buffer_angle_excess(beta_at(0)) <= angle_tolerance || m_zone.near_input_corner(cyc[i])) return false;
-    auto all_betas = [&] {
-      std::array<double, 7> betas;
-      for(int d = -3; d <= 3; ++d) betas[std::size_t(d + 3)] = beta_at(d);
-      return betas;
+    auto excess_at = [&](int d) { return widened_excess_at(m_zone.xy[node(d - 1)], m_zone.xy[node(d)], m_zone.xy[node(d + 1)]); };
+    if(buffer_angle_excess(right_side_angle(m_zone.xy[node(-1)], m_zone.xy[cyc[i]], m_zone.xy[node(1)])) <= angle_tolerance
+       || m_zone.near_input_corner(cyc[i]))
+      return false;
+    auto all_excesses = [&] {
+      std::array<double, 7> excesses;
+      for(int d = -3; d <= 3; ++d) excesses[std::size_t(d + 3)] = excess_at(d);
+      return excesses;
     };
-    auto objective = [&](bool count_first) { return excess_score(all_betas(), count_first); };
+    auto objective = [&](bool count_first) { return score_of_excesses(all_excesses(), count_first); };
     const double start = objective(true);
     std::vector<std::size_t> movers;
     std::vector<Point_2d> before;
@@ -228,14 +230,14 @@ private:
         const Point_2d old = m_zone.xy[v];
         const double e = 0.5 * (length_2d(old - m_zone.xy[a]) + length_2d(m_zone.xy[c] - old));
         // v's move changes the angles at it and its two neighbours only
-        const std::array<double, 7> betas = all_betas();
-        double best = excess_score(betas, false);
+        const std::array<double, 7> excesses = all_excesses();
+        double best = score_of_excesses(excesses, false);
         Point_2d best_p = old;
         auto consider = [&](const Point_2d& p) {
           m_zone.xy[v] = p;
-          std::array<double, 7> moved_betas = betas;
-          for(int j = d - 1; j <= d + 1; ++j) moved_betas[std::size_t(j + 3)] = beta_at(j);
-          const double x = excess_score(moved_betas, false);
+          std::array<double, 7> tried = excesses;
+          for(int j = d - 1; j <= d + 1; ++j) tried[std::size_t(j + 3)] = excess_at(j);
+          const double x = score_of_excesses(tried, false);
           m_zone.xy[v] = old;
           if(!(x < best - angle_tolerance / 10) || !admissible_boundary_position(a, v, c, p, quads_at)) return false;
           best = x;
