@@ -98,6 +98,16 @@ inline double rounding_tolerance(const Point_2d& a, const Point_2d& b, const Poi
                     64 * std::numeric_limits<double>::epsilon() * scale / edge * 180 / Buffer_tolerances::pi);
 }
 
+// The least lowering of buffer_angle_excesses() at a, b and c (consecutive on a core cycle
+// between a2 and c2) that a search may take for a gain: a tenth of the angle tolerance, or of
+// the rounding of the three angles where it is larger. Below that, far from the origin, a
+// search would follow the rounding of the coordinates, step by step, for nothing.
+inline double least_search_gain(const Point_2d& a2, const Point_2d& a, const Point_2d& b, const Point_2d& c,
+                                const Point_2d& c2)
+{
+  return (std::max)({ rounding_tolerance(a2, a, b), rounding_tolerance(a, b, c), rounding_tolerance(b, c, c2) }) / 10;
+}
+
 } // namespace internal
 } // namespace Quad_mesher_2
 } // namespace CGAL

@@ -151,7 +151,8 @@ private:
       : z(zone), a2(a2_), a(a_), b(b_), c1(c1_), c2(c2_),
         d(right_bisector(z.xy[a], z.xy[b], z.xy[c1])),
         s(0.5 * (length_2d(z.xy[a] - z.xy[b]) + length_2d(z.xy[c1] - z.xy[b]))),
-        clear(0.25 * z.local_size[b])
+        clear(0.25 * z.local_size[b]),
+        least_gain(least_search_gain(z.xy[a2], z.xy[a], z.xy[b], z.xy[c1], z.xy[c2]))
     {}
 
     // the buffer-side angles' excess with Y at y, the worst first: a filled notch is off the
@@ -164,11 +165,11 @@ private:
     double quad_badness_with(const Point_2d& y) const { return quad_badness({ z.xy[b], z.xy[a], y, z.xy[c1] }); }
 
     // Y at y if that lowers the excess by more than rounding (the same choice on a scaled
-    // domain), keeps the quad within [45, 135] and its new edges clear of the boundary
+    // domain, no steps that follow the rounding far from the origin), keeps the quad within [45, 135] and its new edges clear of the boundary
     bool consider(const Point_2d& y)
     {
       const double after = excess(y);
-      if(!(after < best - angle_tolerance / 10) || quad_badness_with(y) > 45.0 + core_slack
+      if(!(after < best - least_gain) || quad_badness_with(y) > 45.0 + core_slack
          || !z.clear_of_boundary(z.xy[a], y, clear) || !z.clear_of_boundary(y, z.xy[c1], clear))
         return false;
       best = after;
@@ -212,6 +213,7 @@ private:
     const Vector_2d d; // the unit bisector of beta, into the buffer
     const double s;   // the mean length of the notch's two edges
     const double clear;
+    const double least_gain; // least_search_gain() about b
     double best = excess(z.xy[b]);
     Point_2d best_y = ORIGIN;
     bool found = false;

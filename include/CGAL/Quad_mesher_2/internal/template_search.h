@@ -141,15 +141,15 @@ private:
     const Point_2d old = m_zone.xy[b];
     auto excess = [&](const Point_2d& p) { return buffer_angle_excesses(m_zone.xy[a2], m_zone.xy[a], p, m_zone.xy[c], m_zone.xy[c2]); };
     double best = excess(old);
-    if(best == 0 || buffer_angle_excess(right_side_angle(m_zone.xy[a], old, m_zone.xy[c])) <= angle_tolerance
-       || m_zone.near_input_corner(b))
+    if(best == 0 || !out_of_range(a, old, c) || m_zone.near_input_corner(b))
       return false;
+    const double least_gain = least_search_gain(m_zone.xy[a2], m_zone.xy[a], old, m_zone.xy[c], m_zone.xy[c2]);
     const double e = 0.5 * (length_2d(old - m_zone.xy[a]) + length_2d(m_zone.xy[c] - old));
     auto ring = [&](double r, int k) { return old + (r * e) * unit_directions<12>()[std::size_t(k)]; };
     Point_2d best_p = old;
     auto consider = [&](const Point_2d& p) {
       const double x = excess(p);
-      if(!(x < best - angle_tolerance / 10) || !admissible_boundary_position(a, b, c, p, quads_at)) return false;
+      if(!(x < best - least_gain) || !admissible_boundary_position(a, b, c, p, quads_at)) return false;
       best = x;
       best_p = p;
       return true;
@@ -159,14 +159,14 @@ private:
         consider(ring(r, k));
     pattern_search(best_p, e, best, consider);
     bool reshaped = false;
-    if(buffer_angle_excess(right_side_angle(m_zone.xy[a], best_p, m_zone.xy[c])) > angle_tolerance) {
+    if(out_of_range(a, best_p, c)) {
       std::vector<std::pair<double, Point_2d>> targets; // in order of distance
       for(double r : { 0.1, 0.2, 0.3, 0.45 })
         for(int k = 0; k < 12; ++k) {
           const Point_2d p = ring(r, k);
           const double x = excess(p);
-          if(x < best - angle_tolerance / 10
-             && buffer_angle_excess(right_side_angle(m_zone.xy[a], p, m_zone.xy[c])) <= angle_tolerance)
+          if(x < best - least_gain
+             && !out_of_range(a, p, c))
             targets.emplace_back(x, p);
         }
       std::stable_sort(targets.begin(), targets.end(),
@@ -203,9 +203,7 @@ private:
     if(n < 8) return false;
     auto node = [&](int d) { return cyc[(i + 2 * n + d) % n]; };
     auto excess_at = [&](int d) { return widened_excess_at(m_zone.xy[node(d - 1)], m_zone.xy[node(d)], m_zone.xy[node(d + 1)]); };
-    if(buffer_angle_excess(right_side_angle(m_zone.xy[node(-1)], m_zone.xy[cyc[i]], m_zone.xy[node(1)])) <= angle_tolerance
-       || m_zone.near_input_corner(cyc[i]))
-      return false;
+    if(!out_of_range(node(-1), m_zone.xy[cyc[i]], node(1)) || m_zone.near_input_corner(cyc[i])) return false;
     auto all_excesses = [&] {
       std::array<double, 7> excesses;
       for(int d = -3; d <= 3; ++d) excesses[std::size_t(d + 3)] = excess_at(d);
@@ -229,6 +227,7 @@ private:
         const std::size_t a = node(d - 1), c = node(d + 1);
         const Point_2d old = m_zone.xy[v];
         const double e = 0.5 * (length_2d(old - m_zone.xy[a]) + length_2d(m_zone.xy[c] - old));
+        const double least_gain = least_search_gain(m_zone.xy[node(d - 2)], m_zone.xy[a], old, m_zone.xy[c], m_zone.xy[node(d + 2)]);
         // v's move changes the angles at it and its two neighbours only
         const std::array<double, 7> excesses = all_excesses();
         double best = score_of_excesses(excesses, false);
@@ -239,7 +238,7 @@ private:
           for(int j = d - 1; j <= d + 1; ++j) tried[std::size_t(j + 3)] = excess_at(j);
           const double x = score_of_excesses(tried, false);
           m_zone.xy[v] = old;
-          if(!(x < best - angle_tolerance / 10) || !admissible_boundary_position(a, v, c, p, quads_at)) return false;
+          if(!(x < best - least_gain) || !admissible_boundary_position(a, v, c, p, quads_at)) return false;
           best = x;
           best_p = p;
           return true;
@@ -264,6 +263,14 @@ private:
     }
     if(kept) ++m_zone.report.searched_vertices;
     return kept;
+  }
+
+  // whether the buffer-side angle at a core boundary vertex at p, between vertices a and c,
+  // is out of [112.5, 225] by more than its rounding
+  bool out_of_range(std::size_t a, const Point_2d& p, std::size_t c) const
+  {
+    const Point_2d &A = m_zone.xy[a], &C = m_zone.xy[c];
+    return buffer_angle_excess(right_side_angle(A, p, C)) > rounding_tolerance(A, p, C);
   }
 
   // true if core boundary vertex b (between a and c) may lie at p: every quad at it within
