@@ -286,6 +286,8 @@ void add_buffer(const Options& opt, const Mesher& mesher, nlohmann::ordered_json
                        { "buffer_angles_out", b.buffer_angles_out },
                        { "buffer_angles_out_away_from_corners", b.buffer_angles_out_away_from_corners },
                        { "vertices_searched", b.searched_vertices },
+                       { "moves_searched", b.moves_searched },
+                       { "moves_recalled", b.moves_recalled },
                        { "interior_vertices_moved", b.shaped_interior },
                        { "first_layer_quads", b.first_layer_quads },
                        { "second_layer_quads", b.second_layer_quads },

@@ -1835,6 +1835,98 @@ TEST(Buffer_layers, an_invalid_round_is_refined_at_its_angles_out_too)
 
 // A random 2-opt polygon with four holes and a corner cut 0.0059 of its side
 // (random_sweep.py --seed 4, domain 67): the optimiser slid a boundary point so near the end
+// every buffer stage on `core` (cells of side 2 at most), with `memo` keeping the moves
+Mesh buffered(Mesh core, const Domain& d, QM::internal::Move_memo* memo, QM::Buffer_report& report)
+{
+  const Loops loops = QM::extract_loops(d);
+  QM::internal::Buffer_layers<K> layers(core, std::vector<double>(core.points.size(), 2.0), d, loops, K(), memo);
+  EXPECT_TRUE(layers.match_loops());
+  layers.apply_boundary_templates({});
+  layers.apply_connectivity_templates();
+  layers.build_first_layer();
+  layers.build_second_layer();
+  layers.optimize({});
+  report = layers.report();
+  return core;
+}
+
+// A round whose moves start from the states of the round before recalls where they ended
+// instead of searching again (move_memo.h), with the same mesh as a search: here every state
+// is the last round's.
+TEST(Buffer_layers, moves_from_the_last_rounds_states_are_recalled_with_the_same_result)
+{
+  Mesh core;
+  for(int i = 0; i <= 3; ++i)
+    for(int j = 0; j <= 3; ++j) core.points.emplace_back(2 * i, j);
+  for(std::size_t i = 0; i < 3; ++i)
+    for(std::size_t j = 0; j < 3; ++j)
+      core.quads.push_back({ 4 * i + j, 4 * (i + 1) + j, 4 * (i + 1) + j + 1, 4 * i + j + 1 });
+  const Domain d = polygons({ disc(3, 1.5, 6, 64) });
+  QM::Buffer_report searched, first_round, second_round;
+  const Mesh without = buffered(core, d, nullptr, searched);
+  QM::internal::Move_memo memo;
+  memo.next_round();
+  const Mesh first = buffered(core, d, &memo, first_round);
+  memo.next_round();
+  const Mesh second = buffered(core, d, &memo, second_round);
+  for(const Mesh* m : { &first, &second }) {
+    EXPECT_TRUE(m->points == without.points);
+    EXPECT_TRUE(m->quads == without.quads);
+  }
+  EXPECT_EQ(searched.moves_recalled, 0u);
+  EXPECT_GT(searched.moves_searched, 0u);
+  EXPECT_EQ(first_round.moves_searched + first_round.moves_recalled, searched.moves_searched);
+  EXPECT_EQ(second_round.moves_searched, 0u);
+  EXPECT_EQ(second_round.moves_recalled, searched.moves_searched);
+}
+
+// Moves are forgotten after a round that did not see them; the last round's are found.
+TEST(Buffer_layers, the_move_memo_keeps_this_round_and_the_last)
+{
+  QM::internal::Move_memo memo;
+  QM::internal::State_hash a, b;
+  a.add(1.0);
+  b.add(2.0);
+  const QM::internal::Point_2d pa(1, 2), pb(3, 4);
+  QM::internal::Point_2d found;
+  memo.insert(a, pa);
+  ASSERT_TRUE(memo.find(a, found));
+  EXPECT_EQ(found, pa);
+  EXPECT_FALSE(memo.find(b, found));
+  memo.next_round(); // a is the last round's
+  memo.insert(b, pb);
+  ASSERT_TRUE(memo.find(b, found));
+  EXPECT_EQ(found, pb);
+  memo.next_round(); // b is the last round's; a was neither seen nor found in the round before
+  EXPECT_FALSE(memo.find(a, found));
+  ASSERT_TRUE(memo.find(b, found)); // found, it is kept for the next round
+  memo.next_round();
+  EXPECT_TRUE(memo.find(b, found));
+  for(int k = 0; k < 5000; ++k) { // past the first table size: it grows
+    QM::internal::State_hash h;
+    h.add(std::uint64_t(k));
+    memo.insert(h, QM::internal::Point_2d(k, -k));
+  }
+  for(int k = 0; k < 5000; k += 997) {
+    QM::internal::State_hash h;
+    h.add(std::uint64_t(k));
+    ASSERT_TRUE(memo.find(h, found));
+    EXPECT_EQ(found, QM::internal::Point_2d(k, -k));
+  }
+}
+
+// The rounds after the first refine the quadtree around their requests only: most of their
+// moves start where the round before left them and are recalled.
+TEST(Buffer_layers, later_rounds_recall_most_moves)
+{
+  const Domain d = load_test_data("random_convex_2_20.poly");
+  ASSERT_FALSE(d.points.empty());
+  Mesher mesher(d);
+  mesher.run(Stage::BUFFER2);
+  ASSERT_GE(mesher.rounds(), 2);
+  EXPECT_GT(mesher.buffer_report().moves_recalled, 4 * mesher.buffer_report().moves_searched);
+}
+
 // of its input edge that the edge meeting it there passed within the whole-mesh check's
 // tolerance, a node on the other side's edge: an invalid first round. A point sliding on an
 // input edge keeps the shortest edge's length from the edges at its ends.

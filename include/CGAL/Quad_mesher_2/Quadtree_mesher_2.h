@@ -196,7 +196,7 @@ public:
   {
     CGAL_precondition(m_tree != nullptr && !m_domain.is_point_cloud());
     auto start = std::chrono::steady_clock::now();
-    internal::Buffer_layers<GeomTraits> layers(mesh, m_core_vertex_size, m_domain, m_loops, m_traits);
+    internal::Buffer_layers<GeomTraits> layers(mesh, m_core_vertex_size, m_domain, m_loops, m_traits, &m_move_memo);
     bool ok = layers.match_loops();
     if(ok && last >= Stage::TEMPLATES) {
       layers.apply_boundary_templates(m_point_vertices);
@@ -237,6 +237,7 @@ public:
   Mesh run(Stage last)
   {
     m_refinement_queue.clear();
+    m_move_memo = internal::Move_memo();
     m_round_figures.clear();
     m_quality.reset();
     m_rounds = Rounds(max_refinement_rounds, max_stalled_angle_rounds);
@@ -246,6 +247,7 @@ public:
     for(;;) {
       const auto round_start = std::chrono::steady_clock::now();
       m_rounds.start_round();
+      m_move_memo.next_round();
       build_quadtree();
       if(m_rounds.repeats_a_failure(m_requests_refined)) {
         if(m_rounds.has_valid_round())
@@ -675,6 +677,7 @@ private:
   std::vector<std::size_t> m_point_vertices;
   std::vector<double> m_core_vertex_size;       // largest cell side at each core vertex
   internal::Refinement_queue m_refinement_queue; // where earlier rounds asked for finer cells
+  internal::Move_memo m_move_memo;              // the buffer's moves of this round and the last
   bool m_requests_refined = false; // whether those the last build_quadtree() applied first split a cell
   Buffer_report m_buffer_report;
   internal::Refinement_requests m_buffer_requests; // the last round's

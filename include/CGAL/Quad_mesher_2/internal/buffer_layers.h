@@ -47,10 +47,14 @@ class Buffer_layers
   typedef Quad_mesh_2<typename K::Point_2> Mesh;
 
 public:
+  /// `memo`, if not null, keeps the results of local moves from one refinement round to the
+  /// next (see move_memo.h)
   Buffer_layers(Mesh& mesh, const std::vector<double>& local_size, const Domain_2<K>& domain,
-                const Domain_loops_2<K>& loops, const K& traits)
+                const Domain_loops_2<K>& loops, const K& traits, Move_memo* memo = nullptr)
     : m_zone(mesh, local_size, domain, loops, traits)
-  {}
+  {
+    m_zone.memo = memo;
+  }
 
   const Buffer_report& report() const { return m_zone.report; }
   const Refinement_requests& requests() const { return m_zone.requests; }

@@ -16,6 +16,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -356,6 +357,16 @@ private:
     const Local current = local_cost(v, nullptr);
     if(current.worst <= 30.0) return false;
     const Point_2d old = m_zone.xy[v];
+    State_hash state;
+    if(m_zone.memo != nullptr) {
+      state = move_state(v);
+      Point_2d to;
+      if(m_zone.memo->find(state, to)) {
+        ++m_zone.report.moves_recalled;
+        m_zone.xy[v] = to;
+        return to != old;
+      }
+    }
     std::vector<Point_2d>& targets = m_targets;
     targets.push_back(m_zone.parallelogram_targets(v, m_quads_at, targets));
     add_turns_about_corners(v, m_quads_at, targets);
@@ -374,9 +385,48 @@ private:
           best_p = p;
         }
       }
+    ++m_zone.report.moves_searched;
+    if(m_zone.memo != nullptr) m_zone.memo->insert(state, best_p);
     if(best_p == old) return false;
     m_zone.xy[v] = best_p;
     return true;
+  }
+
+  // What try_move(v) depends on past its first test, hashed (see move_memo.h): the pass's
+  // course (by_excess), the shortest edge a move may leave, whether v is on the core's
+  // boundary, its quads in order with their corners' positions and input angles and which
+  // of them they share (by first appearance), and the edge v slides on with its neighbours.
+  State_hash move_state(std::size_t v) const
+  {
+    State_hash h;
+    h.add(std::uint64_t(0x0B)); // the optimiser's move, not a first point's
+    h.add(std::uint64_t(m_by_excess));
+    h.add(m_min_edge2);
+    h.add(std::uint64_t(m_zone.is_core_boundary(v)));
+    std::vector<std::size_t>& seen = m_state_vertices;
+    seen.assign(1, v);
+    auto local_index = [&](std::size_t w) {
+      const auto it = std::find(seen.begin(), seen.end(), w);
+      if(it != seen.end()) return std::uint64_t(it - seen.begin());
+      seen.push_back(w);
+      return std::uint64_t(seen.size() - 1);
+    };
+    h.add(m_zone.xy[v]);
+    for(std::size_t q : m_quads_at[v])
+      for(std::size_t w : m_zone.mesh.quads[q]) {
+        h.add(local_index(w));
+        h.add(m_zone.xy[w]);
+        h.add(m_zone.input_corner_angle(w));
+      }
+    const auto slide = m_zone.slides.find(v);
+    if(slide == m_zone.slides.end()) return h;
+    h.add(std::uint64_t(slide->second.loop));
+    h.add(std::uint64_t(slide->second.edge));
+    for(std::size_t w : slide->second.neighbors) {
+      h.add(w == none ? ~std::uint64_t(0) : local_index(w));
+      if(w != none) h.add(m_zone.xy[w]);
+    }
+    return h;
   }
 
   // how a course of moves left the quads the buffer stages made or changed, as a Local over
@@ -562,6 +612,7 @@ private:
   mutable std::size_t m_chain_vertex = none; // the vertex m_chain is corner_chain() of
   mutable std::vector<Wedge> m_chain;
   mutable std::vector<std::pair<Point_2d, Point_2d>> m_wedge_points; // folded_at()'s, for their memory
+  mutable std::vector<std::size_t> m_state_vertices;                 // move_state()'s, for their memory
 };
 
 } // namespace internal

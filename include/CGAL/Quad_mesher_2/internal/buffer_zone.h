@@ -18,6 +18,7 @@
 #include <CGAL/Quad_mesher_2/internal/buffer_tolerances.h>
 #include <CGAL/Quad_mesher_2/internal/loop_locator.h>
 #include <CGAL/Quad_mesher_2/internal/mesh_adjacency.h>
+#include <CGAL/Quad_mesher_2/internal/move_memo.h>
 #include <CGAL/Quad_mesher_2/internal/quad_geometry.h>
 
 #include <CGAL/Bbox_2.h>
@@ -464,6 +465,7 @@ public:
   std::vector<char> repaired_mark; // per point
   std::vector<char> fixed_mark;    // per core point: a domain's isolated point, which never moves
   std::vector<char> shaped_mark;   // per core point: an interior one the templates moved
+  Move_memo* memo = nullptr; // the moves of this round and the last, if the rounds keep them
   bool first_built = false;
   std::size_t core_points = 0;
   // the first quad of the first buffer layer and of the second (the core's come before)

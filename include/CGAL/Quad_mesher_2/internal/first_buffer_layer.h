@@ -18,6 +18,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace CGAL {
@@ -134,6 +135,18 @@ private:
     Local best = local(i, F[i], [&](const Point_2d&) { return G[i]; }, nullptr);
     if(best.invalid == 0 && best.out == 0 && best.worst <= 20.0) return false;
     const double h = m_zone.local_size[cyc[i]];
+    State_hash state;
+    if(m_zone.memo != nullptr) {
+      state = move_state(i);
+      Point_2d to;
+      if(m_zone.memo->find(state, to)) {
+        ++m_zone.report.moves_recalled;
+        if(to == F[i]) return false;
+        F[i] = to;
+        G[i] = m_zone.locator->closest(to, 2 * h, l).point;
+        return true;
+      }
+    }
     Point_2d best_f = F[i], best_g = G[i];
     const Point_2d mid = CGAL::midpoint(F[(i + n - 1) % n], F[(i + 1) % n]);
     tries.clear();
@@ -149,10 +162,32 @@ private:
       const Local r = local(i, f, boundary_point, &best);
       if(r < best) { best = r; best_f = f; best_g = g; }
     }
+    ++m_zone.report.moves_searched;
+    if(m_zone.memo != nullptr) m_zone.memo->insert(state, best_f);
     if(best_f == F[i]) return false;
     F[i] = best_f;
     G[i] = best_g;
     return true;
+  }
+
+  // What try_move(i) depends on past its first test, hashed (see move_memo.h): B, F and G at
+  // i and its two neighbours, where F_i started and how far it may go, the cell size and the
+  // loop its boundary points are on. (A moved F_i's boundary point is the loop's point
+  // nearest to it, as the tries found it.)
+  State_hash move_state(std::size_t i) const
+  {
+    State_hash h;
+    h.add(std::uint64_t(0xF1)); // a first point's move, not the optimiser's
+    for(std::size_t j : { (i + n - 1) % n, i, (i + 1) % n }) {
+      h.add(m_zone.xy[cyc[j]]);
+      h.add(F[j]);
+      h.add(G[j]);
+    }
+    h.add(start[i]);
+    h.add(reach[i]);
+    h.add(m_zone.local_size[cyc[i]]);
+    h.add(std::uint64_t(l));
+    return h;
   }
 
   Buffer_zone<K>& m_zone;
