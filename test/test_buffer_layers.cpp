@@ -1619,11 +1619,9 @@ void expect_lemma_2_angles(const Mesh& core)
   EXPECT_LE(range.max, 135 + 1e-9);
 }
 
-// A 3 x 3 block of 2 x 1 rectangles: each corner of the block is a convex corner whose one
-// quad is not a square. The bisector steps of template 1(b) stop it at 125.7 degrees (234.3
-// on the buffer side: 0.3 e cuts too little, 0.41 e too much), the plane search off the
-// bisector at 135.
-TEST(Buffer_layers, templates_search_the_plane_where_the_bisector_steps_fail)
+// a core of 3 x 3 cells 2 wide and 1 high, [0, 6] x [0, 3]: not squares, so the bisector steps
+// leave buffer-side angles out
+Mesh wide_cell_core()
 {
   Mesh core;
   for(int i = 0; i <= 3; ++i)
@@ -1631,6 +1629,16 @@ TEST(Buffer_layers, templates_search_the_plane_where_the_bisector_steps_fail)
   for(std::size_t i = 0; i < 3; ++i)
     for(std::size_t j = 0; j < 3; ++j)
       core.quads.push_back({ 4 * i + j, 4 * (i + 1) + j, 4 * (i + 1) + j + 1, 4 * i + j + 1 });
+  return core;
+}
+
+// A 3 x 3 block of 2 x 1 rectangles: each corner of the block is a convex corner whose one
+// quad is not a square. The bisector steps of template 1(b) stop it at 125.7 degrees (234.3
+// on the buffer side: 0.3 e cuts too little, 0.41 e too much), the plane search off the
+// bisector at 135.
+TEST(Buffer_layers, templates_search_the_plane_where_the_bisector_steps_fail)
+{
+  Mesh core = wide_cell_core();
   const Domain d = polygons({ disc(3, 1.5, 6, 64) });
   const Loops loops = QM::extract_loops(d);
   QM::internal::Buffer_layers<K> layers(core, std::vector<double>(core.points.size(), 2.0), d, loops, K());
@@ -1855,12 +1863,7 @@ Mesh buffered(Mesh core, const Domain& d, QM::internal::Move_memo* memo, QM::Buf
 // is the last round's.
 TEST(Buffer_layers, moves_from_the_last_rounds_states_are_recalled_with_the_same_result)
 {
-  Mesh core;
-  for(int i = 0; i <= 3; ++i)
-    for(int j = 0; j <= 3; ++j) core.points.emplace_back(2 * i, j);
-  for(std::size_t i = 0; i < 3; ++i)
-    for(std::size_t j = 0; j < 3; ++j)
-      core.quads.push_back({ 4 * i + j, 4 * (i + 1) + j, 4 * (i + 1) + j + 1, 4 * i + j + 1 });
+  const Mesh core = wide_cell_core();
   const Domain d = polygons({ disc(3, 1.5, 6, 64) });
   QM::Buffer_report searched, first_round, second_round;
   const Mesh without = buffered(core, d, nullptr, searched);

@@ -112,7 +112,7 @@ public:
       const std::size_t n = cyc.size();
       for(std::size_t i = 0; i < n; ++i) {
         const std::size_t a = cyc[(i + n - 1) % n], b = cyc[i], c = cyc[(i + 1) % n];
-        if(buffer_angle_excess(right_side_angle(m_zone.xy[a], m_zone.xy[b], m_zone.xy[c])) > rounding_tolerance(m_zone.xy[a], m_zone.xy[b], m_zone.xy[c])) {
+        if(out_of_lemma_2_range(m_zone.xy[a], m_zone.xy[b], m_zone.xy[c])) {
           ++m_zone.report.buffer_angles_out;
           if(!m_zone.near_input_corner(b)) ++m_zone.report.buffer_angles_out_away_from_corners;
         }

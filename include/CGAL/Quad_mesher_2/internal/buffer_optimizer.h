@@ -358,14 +358,10 @@ private:
     if(current.worst <= 30.0) return false;
     const Point_2d old = m_zone.xy[v];
     State_hash state;
-    if(m_zone.memo != nullptr) {
-      state = move_state(v);
-      Point_2d to;
-      if(m_zone.memo->find(state, to)) {
-        ++m_zone.report.moves_recalled;
-        m_zone.xy[v] = to;
-        return to != old;
-      }
+    Point_2d to;
+    if(m_zone.recall_move(state, [&] { return move_state(v); }, to)) {
+      m_zone.xy[v] = to;
+      return to != old;
     }
     std::vector<Point_2d>& targets = m_targets;
     targets.push_back(m_zone.parallelogram_targets(v, m_quads_at, targets));
@@ -385,8 +381,7 @@ private:
           best_p = p;
         }
       }
-    ++m_zone.report.moves_searched;
-    if(m_zone.memo != nullptr) m_zone.memo->insert(state, best_p);
+    m_zone.record_move(state, best_p);
     if(best_p == old) return false;
     m_zone.xy[v] = best_p;
     return true;

@@ -47,7 +47,7 @@ inline double widened_excess_at(const Point_2d& a, const Point_2d& b, const Poin
   const double cross = CGAL::determinant(t1, t2), dot = CGAL::scalar_product(t1, t2);
   const double tan_45 = 1.0, tan_67_5 = 2.414213562373095; // 1 + sqrt(2)
   if(dot > 0 && cross < dot * (tan_45 * (1 - 1e-10)) && cross > -dot * (tan_67_5 * (1 - 1e-10))) return 0.0;
-  return widened_excess(180.0 + std::atan2(cross, dot) * 180.0 / Buffer_tolerances::pi);
+  return widened_excess(right_side_angle(a, b, c));
 }
 
 // Lemma 2's measure of buffer-side angles out of range, from their widened_excess()es.
@@ -96,6 +96,13 @@ inline double rounding_tolerance(const Point_2d& a, const Point_2d& b, const Poi
   const double edge = (std::min)(length_2d(a - b), length_2d(c - b));
   return (std::max)(Buffer_tolerances::angle_tolerance,
                     64 * std::numeric_limits<double>::epsilon() * scale / edge * 180 / Buffer_tolerances::pi);
+}
+
+// whether the buffer-side angle at b (between a and c on a core cycle) is out of Lemma 2's
+// range by more than rounding the coordinates can change it by
+inline bool out_of_lemma_2_range(const Point_2d& a, const Point_2d& b, const Point_2d& c)
+{
+  return buffer_angle_excess(right_side_angle(a, b, c)) > rounding_tolerance(a, b, c);
 }
 
 // The least lowering of buffer_angle_excesses() at a, b and c (consecutive on a core cycle

@@ -216,6 +216,25 @@ public:
     return ends;
   }
 
+  // Whether a local move from `state` was made in this round or the last (see move_memo.h):
+  // then true, with where it ended in `to`. The state is hashed only where the rounds keep
+  // moves (`memo`): `state_of()` gives it then.
+  template <class State_of>
+  bool recall_move(State_hash& state, const State_of& state_of, Point_2d& to)
+  {
+    if(memo == nullptr) return false;
+    state = state_of();
+    if(!memo->find(state, to)) return false;
+    ++report.moves_recalled;
+    return true;
+  }
+  // records that the move searched from `state` (given by recall_move()) ended at `to`
+  void record_move(const State_hash& state, const Point_2d& to)
+  {
+    ++report.moves_searched;
+    if(memo != nullptr) memo->insert(state, to);
+  }
+
   // the traits' point at working position p: exactly p, whatever the kernel
   Point_2 mesh_point(const Point_2d& p) const
   {

@@ -165,7 +165,8 @@ private:
     double quad_badness_with(const Point_2d& y) const { return quad_badness({ z.xy[b], z.xy[a], y, z.xy[c1] }); }
 
     // Y at y if that lowers the excess by more than rounding (the same choice on a scaled
-    // domain, no steps that follow the rounding far from the origin), keeps the quad within [45, 135] and its new edges clear of the boundary
+    // domain, no steps that follow the rounding far from the origin), keeps the quad within
+    // [45, 135] and its new edges clear of the boundary
     bool consider(const Point_2d& y)
     {
       const double after = excess(y);

@@ -136,16 +136,12 @@ private:
     if(best.invalid == 0 && best.out == 0 && best.worst <= 20.0) return false;
     const double h = m_zone.local_size[cyc[i]];
     State_hash state;
-    if(m_zone.memo != nullptr) {
-      state = move_state(i);
-      Point_2d to;
-      if(m_zone.memo->find(state, to)) {
-        ++m_zone.report.moves_recalled;
-        if(to == F[i]) return false;
-        F[i] = to;
-        G[i] = m_zone.locator->closest(to, 2 * h, l).point;
-        return true;
-      }
+    Point_2d to;
+    if(m_zone.recall_move(state, [&] { return move_state(i); }, to)) {
+      if(to == F[i]) return false;
+      F[i] = to;
+      G[i] = m_zone.locator->closest(to, 2 * h, l).point;
+      return true;
     }
     Point_2d best_f = F[i], best_g = G[i];
     const Point_2d mid = CGAL::midpoint(F[(i + n - 1) % n], F[(i + 1) % n]);
@@ -162,8 +158,7 @@ private:
       const Local r = local(i, f, boundary_point, &best);
       if(r < best) { best = r; best_f = f; best_g = g; }
     }
-    ++m_zone.report.moves_searched;
-    if(m_zone.memo != nullptr) m_zone.memo->insert(state, best_f);
+    m_zone.record_move(state, best_f);
     if(best_f == F[i]) return false;
     F[i] = best_f;
     G[i] = best_g;

@@ -141,7 +141,7 @@ private:
     const Point_2d old = m_zone.xy[b];
     auto excess = [&](const Point_2d& p) { return buffer_angle_excesses(m_zone.xy[a2], m_zone.xy[a], p, m_zone.xy[c], m_zone.xy[c2]); };
     double best = excess(old);
-    if(best == 0 || !out_of_range(a, old, c) || m_zone.near_input_corner(b))
+    if(best == 0 || !out_of_lemma_2_range(m_zone.xy[a], old, m_zone.xy[c]) || m_zone.near_input_corner(b))
       return false;
     const double least_gain = least_search_gain(m_zone.xy[a2], m_zone.xy[a], old, m_zone.xy[c], m_zone.xy[c2]);
     const double e = 0.5 * (length_2d(old - m_zone.xy[a]) + length_2d(m_zone.xy[c] - old));
@@ -159,14 +159,13 @@ private:
         consider(ring(r, k));
     pattern_search(best_p, e, best, consider);
     bool reshaped = false;
-    if(out_of_range(a, best_p, c)) {
+    if(out_of_lemma_2_range(m_zone.xy[a], best_p, m_zone.xy[c])) {
       std::vector<std::pair<double, Point_2d>> targets; // in order of distance
       for(double r : { 0.1, 0.2, 0.3, 0.45 })
         for(int k = 0; k < 12; ++k) {
           const Point_2d p = ring(r, k);
           const double x = excess(p);
-          if(x < best - least_gain
-             && !out_of_range(a, p, c))
+          if(x < best - least_gain && !out_of_lemma_2_range(m_zone.xy[a], p, m_zone.xy[c]))
             targets.emplace_back(x, p);
         }
       std::stable_sort(targets.begin(), targets.end(),
@@ -203,7 +202,8 @@ private:
     if(n < 8) return false;
     auto node = [&](int d) { return cyc[(i + 2 * n + d) % n]; };
     auto excess_at = [&](int d) { return widened_excess_at(m_zone.xy[node(d - 1)], m_zone.xy[node(d)], m_zone.xy[node(d + 1)]); };
-    if(!out_of_range(node(-1), m_zone.xy[cyc[i]], node(1)) || m_zone.near_input_corner(cyc[i])) return false;
+    if(!out_of_lemma_2_range(m_zone.xy[node(-1)], m_zone.xy[cyc[i]], m_zone.xy[node(1)]) || m_zone.near_input_corner(cyc[i]))
+      return false;
     auto all_excesses = [&] {
       std::array<double, 7> excesses;
       for(int d = -3; d <= 3; ++d) excesses[std::size_t(d + 3)] = excess_at(d);
@@ -263,14 +263,6 @@ private:
     }
     if(kept) ++m_zone.report.searched_vertices;
     return kept;
-  }
-
-  // whether the buffer-side angle at a core boundary vertex at p, between vertices a and c,
-  // is out of [112.5, 225] by more than its rounding
-  bool out_of_range(std::size_t a, const Point_2d& p, std::size_t c) const
-  {
-    const Point_2d &A = m_zone.xy[a], &C = m_zone.xy[c];
-    return buffer_angle_excess(right_side_angle(A, p, C)) > rounding_tolerance(A, p, C);
   }
 
   // true if core boundary vertex b (between a and c) may lie at p: every quad at it within
