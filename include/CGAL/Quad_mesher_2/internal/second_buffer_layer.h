@@ -64,7 +64,7 @@ class Buffer_strip : Buffer_tolerances
 
 public:
   Buffer_strip(Buffer_zone<K>& zone, std::size_t cycle)
-    : m_zone(zone), m_fans(zone), m_projection(zone, cycle), m_costs(zone), c(cycle), l(zone.cycle_loop[cycle]),
+    : m_zone(zone), m_fans(zone), m_projection(zone, cycle), m_costs(zone), m_pairing(m_costs), c(cycle), l(zone.cycle_loop[cycle]),
       n(zone.cycles[cycle].size()), nv(zone.locator->loop(l).size()), L(zone.locator->length(l)),
       loop_xy(zone.locator->loop(l))
   {}
@@ -308,7 +308,7 @@ private:
     const std::size_t first_candidate = m_zone.xy.size();
     for(std::size_t r = 0; r < n; ++r)
       add_extra_candidate(strip, r, extra, sites);
-    Strip_result res = pair_strip(strip.fid, strip.gid, strip.g, extra, [this](const Quad& q) { return m_costs.strip_cost(q); });
+    Strip_result res = m_pairing.pair(strip.fid, strip.gid, strip.g, extra);
     forget_candidates(first_candidate);
     insert_chosen_extra_nodes(strip, extra, sites, first_candidate, res);
     return res;
@@ -581,6 +581,7 @@ private:
   Sharp_corner_fans<K> m_fans;
   Strip_projection<K> m_projection;
   Strip_quad_costs<K> m_costs;
+  Strip_pairing<Strip_quad_costs<K>> m_pairing; // kept from plan to plan: see Strip_pairing
   // the cycle, its loop, the number of F points and of loop vertices, the loop's length
   const std::size_t c, l, n, nv;
   const double L;

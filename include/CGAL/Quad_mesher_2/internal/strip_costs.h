@@ -10,10 +10,12 @@
 #define CGAL_QUAD_MESHER_2_INTERNAL_STRIP_COSTS_H
 
 #include <CGAL/Quad_mesher_2/internal/buffer_zone.h>
+#include <CGAL/Quad_mesher_2/internal/state_hash.h>
 
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 
 namespace CGAL {
 namespace Quad_mesher_2 {
@@ -51,6 +53,15 @@ public:
     const double b = cost(q);
     if(b <= 45.0 + angle_tolerance || b >= 1000.0) return b;
     return fixed_angle_out_of_range(q) >= 0 || wide_side_of_reflex_fan(q) >= 0 ? b + 100.0 : b;
+  }
+
+  // everything strip_cost() reads of vertex v: its position, its input corner angle if any,
+  // whether it lies on the boundary chain
+  void describe(std::size_t v, State_hash& h) const
+  {
+    h.add(m_zone.xy[v]);
+    h.add(m_zone.input_corner_angle(v));
+    h.add(std::uint64_t(on_boundary_chain(v)));
   }
 
   // the corner (0 to 3) of q at a boundary node between two others whose angle is out of

@@ -14,11 +14,13 @@
 
 #include <CGAL/Quad_mesher_2/internal/buffer_tolerances.h>
 #include <CGAL/Quad_mesher_2/internal/mesh_adjacency.h>
+#include <CGAL/Quad_mesher_2/internal/state_hash.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -76,78 +78,244 @@ struct Extra_node
   std::size_t edge = Buffer_tolerances::none, id = Buffer_tolerances::none;
 };
 
-// Dynamic programming over the gaps of a strip. Gap r lies between F points r, r+1 (mesh
-// ids fid) and chain nodes g[r] .. g[r+1] (g[n] = M wraps to 0), plus its extra node if it
-// takes it; `mid` of its G triangles (apex F_r) come before its F triangle, the rest (apex
-// F_{r+1}) after. State: 0 = no triangle pending; 1 = the gap's F triangle is pending (it
-// came last); 2 = its last G triangle is; 3 = the same, that triangle's first node being
-// the gap's extra node. `strip_cost(quad)` is a quad's cost in the pairing.
-template <class Strip_cost>
+// The choice a gap's pairing makes: where its F triangle lies among its G triangles (`mid` of
+// them before it) and whether it takes its extra node.
+struct Gap_choice
+{
+  std::uint32_t mid = 0;
+  bool ins = false;
+};
+
+// A min-plus transfer over one gap or a run of them: from the state the gap before leaves
+// (row) to the state the run's last gap leaves (column), the cheapest cost.
+typedef std::array<std::array<Cost, 4>, 4> Transfer;
+
+/// Dynamic programming over the gaps of a strip, kept from one pairing to the next. Gap r lies
+/// between F points r, r+1 (mesh ids fid) and chain nodes g[r] .. g[r+1] (g[n] = M wraps to 0),
+/// plus its extra node if it takes it; `mid` of its G triangles (apex F_r) come before its F
+/// triangle, the rest (apex F_{r+1}) after. State: 0 = no triangle pending; 1 = the gap's F
+/// triangle is pending (it came last); 2 = its last G triangle is; 3 = the same, that
+/// triangle's first node being the gap's extra node.
+///
+/// Each gap is summed up as a Transfer; the strip's cheapest pairing from start state s back to
+/// s is entry (s, s) of their ordered min-plus product, kept in a segment tree. A strip paired
+/// again (another plan, a node taken out) differs from the last in a few gaps: only the gaps
+/// whose inputs (every node's position and kind the costs read: `Costs::describe()`) hash
+/// differently are costed again, and only their paths to the root multiplied again.
+/// `Costs::strip_cost(quad)` is a quad's cost in the pairing.
+template <class Costs>
 class Strip_pairing
 {
   static constexpr std::size_t none = Buffer_tolerances::none;
-  struct Step { std::size_t mid; int state; bool ins; };
-  // A gap's ways to triangulate (with or without its extra node, the fan's middle) cost the
-  // same whatever state the cycle starts in: each is costed once, when first reached, and
-  // the runs from the four start states only add up.
-  struct Option
+  struct Leaf
   {
-    Option(std::size_t m, bool i, std::vector<Triangle> tr) : mid(m), ins(i), t(std::move(tr)) {}
-    std::size_t mid;
-    bool ins;
-    std::vector<Triangle> t;
-    bool paired[2] = { false, false }; // by whether a pending triangle comes in
-    Cost own[2];                       // its own quads' cost, by the same
-    int out[2] = { 0, 0 };
-    std::array<double, 4> with_pending = { { -1, -1, -1, -1 } }; // by incoming state
+    Transfer cost;
+    std::array<std::array<Gap_choice, 4>, 4> choice;
+    std::uint64_t hash[2] = { 0, 0 };
+  };
+  struct Node
+  {
+    Transfer cost;
+    std::array<std::array<std::uint8_t, 4>, 4> via; // the state between the two halves
   };
 
 public:
-  Strip_pairing(const std::vector<std::size_t>& fid, const std::vector<std::size_t>& gid,
-                const std::vector<std::size_t>& g, const std::vector<Extra_node>& extra, const Strip_cost& strip_cost)
-    : m_fid(fid), m_gid(gid), m_g(g), m_extra(extra), m_strip_cost(strip_cost), n(fid.size()), M(gid.size()),
-      m_k(n), m_options(n)
-  {
-    for(std::size_t r = 0; r + 1 < n; ++r) m_k[r] = g[r + 1] - g[r];
-    m_k[n - 1] = M - g[n - 1];
-    for(std::size_t r = 0; r < n; ++r)
-      for(bool ins : { false, true }) {
-        if(ins && extra[r].edge == none) continue;
-        const std::size_t k = m_k[r] + (ins ? 1 : 0);
-        for(std::size_t mid = 0; mid <= k; ++mid) m_options[r].emplace_back(mid, ins, triangles(r, ins, mid));
-      }
-  }
+  explicit Strip_pairing(const Costs& costs) : m_costs(costs) {}
 
-  // the cheapest pairing over the four states the cycle may start (and end) in
-  Strip_result pair()
+  /// The cheapest pairing of the strip over the four states its cycle may start (and end) in.
+  Strip_result pair(const std::vector<std::size_t>& fid, const std::vector<std::size_t>& gid,
+                    const std::vector<std::size_t>& g, const std::vector<Extra_node>& extra)
   {
+    const bool new_strip = set_strip(fid, gid, g, extra);
+    const std::vector<std::size_t> changed = cost_changed_gaps();
+    if(new_strip) multiply_all();
+    else update_tree(changed);
     Strip_result result;
-    std::vector<Step> best_steps;
     int best_start = 0;
-    for(int start = 0; start < 4; ++start) {
-      if(start == 2 && m_k[n - 1] == 0) continue;
-      if(start == 3 && !last_edge_extra(n - 1)) continue;
-      std::vector<Step> steps;
-      const Cost cost = run_from(start, steps);
-      if(cost < result.cost) {
-        result.cost = cost;
-        best_start = start;
-        best_steps = std::move(steps);
-      }
-    }
+    const Transfer& all = root();
+    for(int start = 0; start < 4; ++start)
+      if(all[start][start] < result.cost) { result.cost = all[start][start]; best_start = start; }
     if(result.cost.worst == HUGE_VAL) return result;
-    add_quads(best_start, best_steps, result);
+    std::vector<Gap_choice> steps(n);
+    trace(1, 0, m_size, best_start, best_start, steps);
+    add_quads(best_start, steps, result);
     return result;
   }
 
+  /// how many gaps were costed, over every pairing so far
+  std::size_t gaps_costed() const { return m_gaps_costed; }
+
 private:
-  std::size_t F(std::size_t r) const { return m_fid[r % n]; }
-  std::size_t G(std::size_t k) const { return m_gid[k % M]; }
+  // true if the strip has another number of gaps than the last: nothing is kept
+  bool set_strip(const std::vector<std::size_t>& fid, const std::vector<std::size_t>& gid,
+                 const std::vector<std::size_t>& g, const std::vector<Extra_node>& extra)
+  {
+    m_fid = &fid;
+    m_gid = &gid;
+    m_g = &g;
+    m_extra = &extra;
+    M = gid.size();
+    const bool new_strip = fid.size() != n;
+    if(new_strip) {
+      n = fid.size();
+      m_leaves.assign(n, Leaf{});
+      for(m_size = 1; m_size < n; m_size *= 2) {}
+      m_nodes.assign(m_size, Node{});
+    }
+    m_k.resize(n);
+    for(std::size_t r = 0; r + 1 < n; ++r) m_k[r] = g[r + 1] - g[r];
+    m_k[n - 1] = M - g[n - 1];
+    return new_strip;
+  }
+
+  // the gaps whose inputs changed since the last pairing, costed again, in order
+  std::vector<std::size_t> cost_changed_gaps()
+  {
+    std::vector<std::size_t> changed;
+    for(std::size_t r = 0; r < n; ++r) {
+      const State_hash h = gap_inputs(r);
+      Leaf& leaf = m_leaves[r];
+      if(leaf.hash[0] == h.first() && leaf.hash[1] == h.second()) continue;
+      leaf.hash[0] = h.first();
+      leaf.hash[1] = h.second();
+      cost_gap(r, leaf);
+      changed.push_back(r);
+    }
+    m_gaps_costed += changed.size();
+    return changed;
+  }
+
+  // Everything gap r's transfer reads: its own nodes, its F points and those of the gap before,
+  // whose pending triangle it may pair with, and which of these nodes are the same.
+  State_hash gap_inputs(std::size_t r) const
+  {
+    const std::size_t prev = r == 0 ? n - 1 : r - 1;
+    std::vector<std::size_t>& nodes = m_gap_nodes;
+    nodes.assign({ F(prev), F(r), F(r + 1) });
+    for(std::size_t e = 0; e <= m_k[r]; ++e) nodes.push_back(G((*m_g)[r] + e));
+    if(has_extra(r)) nodes.push_back((*m_extra)[r].id);
+    if(m_k[prev] > 0) nodes.push_back(G((*m_g)[r] + M - 1));
+    if(last_edge_extra(prev)) nodes.push_back((*m_extra)[prev].id);
+    State_hash h;
+    h.add(std::uint64_t(m_k[r]));
+    h.add(std::uint64_t(m_k[prev]));
+    h.add(std::uint64_t(has_extra(r) ? (*m_extra)[r].edge : none));
+    h.add(std::uint64_t(last_edge_extra(prev)));
+    for(std::size_t i = 0; i < nodes.size(); ++i) {
+      m_costs.describe(nodes[i], h);
+      h.add(std::uint64_t(std::find(nodes.begin(), nodes.end(), nodes[i]) - nodes.begin()));
+    }
+    return h;
+  }
+
+  // Gap r's transfer: for each incoming state, each option (without, then with its extra
+  // node; its F triangle after 0, 1, ... G triangles), the first cheapest per outgoing state.
+  void cost_gap(std::size_t r, Leaf& leaf) const
+  {
+    leaf.cost = Transfer{};
+    const std::size_t prev = r == 0 ? n - 1 : r - 1;
+    const std::array<bool, 4> can_come_in = { { true, true, m_k[prev] > 0, last_edge_extra(prev) } };
+    for(bool ins : { false, true }) {
+      if(ins && !has_extra(r)) continue;
+      const std::size_t k = m_k[r] + (ins ? 1 : 0);
+      for(std::size_t mid = 0; mid <= k; ++mid) {
+        const std::vector<Triangle> t = triangles(r, ins, mid);
+        std::array<Cost, 2> own; // by whether a pending triangle comes in
+        std::array<int, 2> out;
+        for(std::size_t p = 0; p < 2; ++p) {
+          std::size_t pos = p;
+          own[p] = Cost{ 0, 0 };
+          for(; pos + 1 < t.size(); pos += 2) own[p].add(m_costs.strip_cost(merge(t[pos], t[pos + 1])));
+          out[p] = pos == t.size() ? 0 : mid == k ? 1 : (ins && last_edge_extra(r)) ? 3 : 2;
+        }
+        for(int s = 0; s < 4; ++s) {
+          if(!can_come_in[s]) continue;
+          const std::size_t p = s != 0 ? 1 : 0;
+          Cost c{ 0, 0 };
+          if(s != 0) c.add(m_costs.strip_cost(merge(pending(prev, s), t[0])));
+          c.add(own[p]);
+          if(c < leaf.cost[s][out[p]]) {
+            leaf.cost[s][out[p]] = c;
+            leaf.choice[s][out[p]] = Gap_choice{ std::uint32_t(mid), ins };
+          }
+        }
+      }
+    }
+  }
+
+  // the products over the tree's nodes above the changed leaves, level by level
+  void update_tree(const std::vector<std::size_t>& changed)
+  {
+    std::vector<std::size_t> level;
+    for(std::size_t r : changed) level.push_back((m_size + r) / 2);
+    while(!level.empty() && level.front() != 0) {
+      level.erase(std::unique(level.begin(), level.end()), level.end());
+      for(std::size_t i : level) multiply(i);
+      for(std::size_t& i : level) i /= 2;
+    }
+  }
+
+  void multiply_all()
+  {
+    for(std::size_t i = m_size; i-- > 1;) multiply(i);
+  }
+
+  // node i = its left child's transfer, then its right child's
+  void multiply(std::size_t i)
+  {
+    const Transfer& A = transfer(2 * i);
+    const Transfer& B = transfer(2 * i + 1);
+    Node& node = m_nodes[i];
+    for(int s = 0; s < 4; ++s)
+      for(int t = 0; t < 4; ++t) {
+        Cost best;
+        std::uint8_t via = 0;
+        for(int m = 0; m < 4; ++m) {
+          if(A[s][m].worst == HUGE_VAL || B[m][t].worst == HUGE_VAL) continue;
+          Cost c = A[s][m];
+          c.add(B[m][t]);
+          if(c < best) { best = c; via = std::uint8_t(m); }
+        }
+        node.cost[s][t] = best;
+        node.via[s][t] = via;
+      }
+  }
+
+  // node i's transfer: a gap's, the identity past the last gap, or a product
+  const Transfer& transfer(std::size_t i) const
+  {
+    if(i < m_size) return m_nodes[i].cost;
+    return i - m_size < n ? m_leaves[i - m_size].cost : m_identity;
+  }
+  const Transfer& root() const { return m_size == 1 ? m_leaves[0].cost : m_nodes[1].cost; }
+  // (not a function-local static built by a lambda: GCC 12 gets that one wrong)
+  static Transfer identity()
+  {
+    Transfer t{};
+    for(int s = 0; s < 4; ++s) t[s][s] = Cost{ 0, 0 };
+    return t;
+  }
+
+  // the gaps' choices under node i (gaps lo .. hi - 1), from state s to state t
+  void trace(std::size_t i, std::size_t lo, std::size_t hi, int s, int t, std::vector<Gap_choice>& steps) const
+  {
+    if(lo >= n) return;
+    if(i >= m_size) { steps[lo] = m_leaves[lo].choice[s][t]; return; }
+    const int m = m_nodes[i].via[s][t];
+    const std::size_t half = (lo + hi) / 2;
+    trace(2 * i, lo, half, s, m, steps);
+    trace(2 * i + 1, half, hi, m, t, steps);
+  }
+
+  std::size_t F(std::size_t r) const { return (*m_fid)[r % n]; }
+  std::size_t G(std::size_t k) const { return (*m_gid)[k % M]; }
+  bool has_extra(std::size_t r) const { return (*m_extra)[r].edge != none; }
   // the e-th node of gap r, with (`ins`) or without its extra node
   std::size_t node(std::size_t r, bool ins, std::size_t e) const
   {
-    if(!ins || e <= m_extra[r].edge) return G(m_g[r] + e);
-    return e == m_extra[r].edge + 1 ? m_extra[r].id : G(m_g[r] + e - 1);
+    const Extra_node& x = (*m_extra)[r];
+    if(!ins || e <= x.edge) return G((*m_g)[r] + e);
+    return e == x.edge + 1 ? x.id : G((*m_g)[r] + e - 1);
   }
   std::vector<Triangle> triangles(std::size_t r, bool ins, std::size_t mid) const
   {
@@ -158,62 +326,17 @@ private:
     for(std::size_t e = mid; e < k; ++e) t.push_back({ node(r, ins, e), node(r, ins, e + 1), F(r + 1) });
     return t;
   }
-  bool last_edge_extra(std::size_t r) const { return m_extra[r].edge != none && m_extra[r].edge + 1 == m_k[r]; }
+  bool last_edge_extra(std::size_t r) const { return has_extra(r) && (*m_extra)[r].edge + 1 == m_k[r]; }
   // the triangle gap r leaves pending in `state`
   Triangle pending(std::size_t r, int state) const
   {
-    const std::size_t end = m_g[r] + m_k[r];
+    const std::size_t end = (*m_g)[r] + m_k[r];
     if(state == 1) return Triangle{ F(r), G(end), F(r + 1) };
-    return Triangle{ state == 3 ? m_extra[r].id : G(end + M - 1), G(end), F(r + 1) };
+    return Triangle{ state == 3 ? (*m_extra)[r].id : G(end + M - 1), G(end), F(r + 1) };
   }
 
-  // The cheapest way around the cycle from state `start` back to it, its steps gap by gap
-  // in `steps` (empty if there is none).
-  Cost run_from(int start, std::vector<Step>& steps)
-  {
-    std::vector<std::array<Cost, 4>> best(n + 1);
-    std::vector<std::array<Step, 4>> back(n + 1);
-    best[0][start] = Cost{ 0, 0 };
-    for(std::size_t r = 0; r < n; ++r)
-      for(int s = 0; s < 4; ++s) {
-        if(best[r][s].worst == HUGE_VAL) continue;
-        const int p = s != 0 ? 1 : 0;
-        for(Option& o : m_options[r]) {
-          const auto& t = o.t;
-          if(!o.paired[p]) pair_option(r, p, o);
-          Cost cst = best[r][s];
-          if(s != 0) {
-            if(o.with_pending[s] < 0) o.with_pending[s] = m_strip_cost(merge(pending(r == 0 ? n - 1 : r - 1, s), t[0]));
-            cst.add(o.with_pending[s]);
-          }
-          cst.add(o.own[p]);
-          const int out = o.out[p];
-          if(cst < best[r + 1][out]) { best[r + 1][out] = cst; back[r + 1][out] = Step{ o.mid, s, o.ins }; }
-        }
-      }
-    if(best[n][start] < Cost()) {
-      steps.assign(n, Step{});
-      int s = start;
-      for(std::size_t r = n; r > 0; --r) { steps[r - 1] = back[r][s]; s = back[r][s].state; }
-    }
-    return best[n][start];
-  }
-
-  // the costs of option o's own quads of gap r, and the state it leaves, with (p = 1) or
-  // without a pending triangle coming in
-  void pair_option(std::size_t r, int p, Option& o) const
-  {
-    const auto& t = o.t;
-    std::size_t pos = std::size_t(p);
-    o.own[p] = Cost{ 0, 0 };
-    for(; pos + 1 < t.size(); pos += 2) o.own[p].add(m_strip_cost(merge(t[pos], t[pos + 1])));
-    const std::size_t k = m_k[r] + (o.ins ? 1 : 0);
-    o.out[p] = pos == t.size() ? 0 : o.mid == k ? 1 : (o.ins && last_edge_extra(r)) ? 3 : 2;
-    o.paired[p] = true;
-  }
-
-  // the quads of the steps from state `start`
-  void add_quads(int start, const std::vector<Step>& steps, Strip_result& result) const
+  // the quads of the gaps' choices from state `start`
+  void add_quads(int start, const std::vector<Gap_choice>& steps, Strip_result& result) const
   {
     result.inserted.assign(n, false);
     Triangle in = start == 0 ? Triangle{} : pending(n - 1, start);
@@ -229,23 +352,20 @@ private:
     }
   }
 
-  const std::vector<std::size_t>& m_fid;
-  const std::vector<std::size_t>& m_gid;
-  const std::vector<std::size_t>& m_g;
-  const std::vector<Extra_node>& m_extra;
-  const Strip_cost& m_strip_cost;
-  const std::size_t n, M; // F points (gaps), chain nodes
+  const Costs& m_costs;
+  const std::vector<std::size_t>* m_fid = nullptr;
+  const std::vector<std::size_t>* m_gid = nullptr;
+  const std::vector<std::size_t>* m_g = nullptr;
+  const std::vector<Extra_node>* m_extra = nullptr;
+  std::size_t n = 0, M = 0;     // F points (gaps), chain nodes
   std::vector<std::size_t> m_k; // chain edges per gap
-  std::vector<std::vector<Option>> m_options;
+  mutable std::vector<std::size_t> m_gap_nodes; // gap_inputs()' scratch
+  std::vector<Leaf> m_leaves;   // by gap
+  std::size_t m_size = 1;       // the tree's leaves: a power of two, at least n
+  std::vector<Node> m_nodes;    // the tree's inner nodes, from 1 (the root)
+  const Transfer m_identity = identity();
+  std::size_t m_gaps_costed = 0;
 };
-
-template <class Strip_cost>
-Strip_result pair_strip(const std::vector<std::size_t>& fid, const std::vector<std::size_t>& gid,
-                        const std::vector<std::size_t>& g, const std::vector<Extra_node>& extra,
-                        const Strip_cost& strip_cost)
-{
-  return Strip_pairing<Strip_cost>(fid, gid, g, extra, strip_cost).pair();
-}
 
 } // namespace internal
 } // namespace Quad_mesher_2
