@@ -191,14 +191,15 @@ private:
     return (std::max)(2e-9 * zone.locator->diagonal(), (std::min)(1e-8 * zone.locator->diagonal(), finest / 4));
   }
 
-  // the core's boundary vertices and the buffer's points but the input vertices
+  // the core's boundary vertices and the buffer's points but the input vertices and those in
+  // no quad (boundary nodes of the strip plans not taken)
   std::vector<std::size_t> movable_vertices() const
   {
     std::vector<std::size_t> movable;
     for(const auto& cyc : m_zone.cycles)
       movable.insert(movable.end(), cyc.begin(), cyc.end());
     for(std::size_t v = m_zone.core_points; v < m_zone.mesh.points.size(); ++v)
-      if(!m_zone.is_input_vertex(v))
+      if(!m_zone.is_input_vertex(v) && m_quads_at[v].size() != 0)
         movable.push_back(v);
     return movable;
   }
