@@ -204,6 +204,27 @@ private:
     return movable;
   }
 
+  // Whether every quad at v is strictly convex with each angle in [60.01, 119.99] degrees:
+  // then the worst deviation from 90 of local_cost(v) is under 30, by products alone (a
+  // corner's |cos| below 0.4998 and its cross product positive beyond quad_badness()'s flat
+  // threshold, both compared squared).
+  bool quads_well_within_60_120(std::size_t v) const
+  {
+    for(std::size_t q : m_quads_at[v]) {
+      const Quad& Q = m_zone.mesh.quads[q];
+      std::array<Vector_2d, 4> e;
+      for(int k = 0; k < 4; ++k) e[k] = m_zone.xy[Q[(k + 1) % 4]] - m_zone.xy[Q[k]];
+      for(int c = 0; c < 4; ++c) {
+        const Vector_2d& in = e[(c + 3) % 4];
+        const Vector_2d& out = e[c];
+        const double cross = CGAL::determinant(in, out), dot = CGAL::scalar_product(in, out);
+        const double ll = in.squared_length() * out.squared_length();
+        if(!(cross > 0 && cross * cross > 1e-12 * ll && dot * dot < 0.2498 * ll)) return false;
+      }
+    }
+    return true;
+  }
+
   // The Local cost of the quads at v. With `bound`, the caller keeps the result only if it is
   // below *bound: every quad only adds to the cost, so the sum stops as soon as it cannot be
   // (same decisions, far fewer quads).
@@ -355,6 +376,7 @@ private:
   // its neighbours' mean (a Laplacian step) and the mean of the others. True if it moved.
   bool try_move(std::size_t v)
   {
+    if(quads_well_within_60_120(v)) return false; // the test below, without a sine or a root
     const Local current = local_cost(v, nullptr);
     if(current.worst <= 30.0) return false;
     const Point_2d old = m_zone.xy[v];
