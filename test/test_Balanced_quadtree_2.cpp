@@ -119,6 +119,26 @@ TEST(Balanced_quadtree_2, refine_at_reaches_requested_level)
   EXPECT_NE(r.bounded_side(p), CGAL::ON_UNBOUNDED_SIDE);
 }
 
+TEST(Balanced_quadtree_2, the_cell_containing_a_point_is_a_node_down_to_its_leaf)
+{
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(0.0, 2.0);
+  for(int trial = 0; trial < 10; ++trial) {
+    const Tree t = random_balanced_tree(rng, 9, 1 + trial % 6);
+    for(int n = 0; n < 200; ++n) {
+      const K::Point_2 p(u(rng), u(rng));
+      const Cell_key leaf = t.locate(p);
+      for(int level = 0; level <= t.max_depth(); ++level) {
+        const Cell_key k = t.cell_containing(p, level);
+        ASSERT_EQ(t.is_node(k), level <= leaf.level) << "trial " << trial << " level " << level;
+        if(level == leaf.level) {
+          ASSERT_EQ(k, leaf);
+        }
+      }
+    }
+  }
+}
+
 TEST(Balanced_quadtree_2, depth_guard_raises_a_clear_error)
 {
   Tree t = unit_tree(5);

@@ -166,6 +166,16 @@ public:
         return k;
     }
   }
+  /// The cell of level `level` (at most `max_depth()`) that contains `p`, a node of the tree
+  /// or not: it is one exactly where the leaf `locate(p)` is at that level or finer, which
+  /// one lookup tells. `p` must lie in the root grid.
+  Cell_key cell_containing(const Point_2& p, int level) const
+  {
+    CGAL_precondition(level <= m_max_depth);
+    const std::uint64_t i = lattice_index(m_traits.compute_x_2_object()(p), m_ox, m_nx, m_max_depth);
+    const std::uint64_t j = lattice_index(m_traits.compute_y_2_object()(p), m_oy, m_ny, m_max_depth);
+    return Cell_key(level, i >> (m_max_depth - level), j >> (m_max_depth - level));
+  }
   /// The vertex of the level-`level` lattice nearest to `p` (ties go up and right), as lattice
   /// coordinates; decided exactly. `p` must lie in the root grid.
   std::pair<std::int64_t, std::int64_t> nearest_vertex(const Point_2& p, int level) const

@@ -280,7 +280,7 @@ public:
       for(int i = -boundary_band; i <= boundary_band; ++i)
         for(int j = -boundary_band; j <= boundary_band; ++j) {
           const Point_2 p = make_point(target.first.x() + i * h, target.first.y() + j * h);
-          if(m_tree.contains(p) && m_tree.locate(p).level < target.second)
+          if(m_tree.contains(p) && !m_tree.is_node(m_tree.cell_containing(p, target.second)))
             m_tree.refine_at(p, target.second);
         }
     }
