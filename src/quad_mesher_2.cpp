@@ -55,7 +55,7 @@ struct Options
   bool verbose = false;
 };
 
-const std::vector<std::string> output_extensions = { ".msh", ".vtu", ".off", ".svg" };
+const std::vector<std::string> output_extensions = { ".msh", ".vtu", ".su2", ".inp", ".off", ".svg" };
 
 // The outputs are written beside their targets under hidden names (the same extension, which
 // picks the format) and renamed into place together once all are written: a run that fails
@@ -457,8 +457,10 @@ void add_options(CLI::App& app, Options& opt, std::array<CLI::Option*, 2>& splin
                  "input: Triangle .poly or .node, a plain 'x y' point file (.xy .txt .pts .dat), "
                  "or WKT (.wkt)")->required();
   app.add_option("-o,--output", opt.outputs,
-                 "output file, format from the extension: .msh (Gmsh 4.1), .vtu (ParaView), "
-                 ".off, .svg (picture, quads coloured by their worst angle); repeatable")
+                 "output file, format from the extension: .msh (Gmsh 4.1), .vtu (ParaView), .su2 "
+                 "(SU2), .inp (Abaqus/CalculiX), .off, .svg (picture, quads coloured by their worst "
+                 "angle); all but .off and .svg carry the boundary edges with their markers (the "
+                 ".poly segment markers, else the loop numbers, outer loop 1); repeatable")
     ->required();
   app.add_option("--report", opt.report,
                  "write a JSON report: counts, angles, shape, validity, quadtree depth, seconds "
@@ -541,7 +543,7 @@ bool outputs_are_usable(const Options& opt)
     if(std::find(output_extensions.begin(), output_extensions.end(), ext)
        == output_extensions.end()) {
       std::cerr << "quad-mesher: output '" << out
-                << "': unknown format (use .msh, .vtu, .off or .svg)\n";
+                << "': unknown format (use .msh, .vtu, .su2, .inp, .off or .svg)\n";
       return false;
     }
   }

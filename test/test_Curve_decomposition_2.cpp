@@ -435,6 +435,8 @@ TEST(CurveDecomposition, DomainWithHole)
   const std::vector<Point_2> outer = ellipse(12, 10, 10, true), hole = ellipse(8, 3, 3, false, 1, 0);
   add_loop(d, outer);
   add_loop(d, hole);
+  d.segment_markers.assign(outer.size(), 7);
+  d.segment_markers.insert(d.segment_markers.end(), hole.size(), 9);
   d.points.push_back(Point_2(-6, 0.5));  // a point on no segment
   d.holes.push_back(Point_2(1, 0.25));
 
@@ -447,6 +449,10 @@ TEST(CurveDecomposition, DomainWithHole)
 
   const CGAL::Quad_mesher_2::Domain_loops_2<K> loops = CGAL::Quad_mesher_2::extract_loops(r);
   ASSERT_EQ(loops.loops.size(), 2u);
+  // each loop's segments keep its marker (the segments are rebuilt loop by loop, outer first)
+  ASSERT_EQ(r.segment_markers.size(), r.segments.size());
+  for(std::size_t s = 0; s < r.segments.size(); ++s)
+    EXPECT_EQ(r.segment_markers[s], s < loops.loops[0].vertices.size() ? 7 : 9) << "segment " << s;
   ASSERT_EQ(loops.isolated_points.size(), 1u);
   EXPECT_EQ(loops.isolated_points[0], d.points.size() - 1);
   const double tol = 1e-3 * bbox_diagonal(d.points);  // one absolute tolerance for both loops

@@ -254,10 +254,12 @@ TEST(IO_read, PolyTolerates)
   EXPECT_EQ(d.points.size(), 3u);
   EXPECT_EQ(d.segments.size(), 3u);
   EXPECT_TRUE(d.holes.empty());
+  EXPECT_EQ(d.segment_markers, (std::vector<int>{ 5, 0, -2 })); // one per segment, as given
   // Regions 0-based with an attribute alone (Triangle's maximum area is optional), comments after.
   std::istringstream r("3\n1 0 0\n2 1 0\n3 0 1\n3\n1 1 2\n2 2 3\n3 3 1\n0\n2 # regions\n0 0.2 0.2 7\n1 0.3 0.2 -1 -1\n# end\n\n");
   ASSERT_TRUE(QIO::read_poly(r, d, &err)) << err;
   EXPECT_EQ(d.points.size(), 3u);
+  EXPECT_TRUE(d.segment_markers.empty()); // the header announces none
 }
 
 TEST(IO_read, PolyWithZeroVerticesReadsTheNodeBesideIt)
@@ -325,6 +327,8 @@ TEST(IO_read, PolyMalformedCases)
     {"non_numeric_count", "three 2 0 0\n", 1, "expected an integer"},
     {"dimension_3", "3 3 0 0\n1 0 0 0\n", 1, "dimension must be 2"},
     {"bad_vertex_marker_count", "3 2 0 2\n", 1, "must be 0 or 1"},
+    {"segment_marker_beyond_int", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n3 1\n1 1 2 1\n2 2 3 4294967296\n3 3 1 1\n0\n", 7,
+     "marker of segment 2 is out of range"},
     {"header_garbage", "3 2 0 0 9\n", 1, "unexpected text"},
     {"non_numeric_x", "3 2 0 0\n1 0 0\n2 abc 0\n3 0 1\n", 3, "expected a number for the x coordinate of vertex 2"},
     {"non_numeric_y", "3 2 0 0\n1 0 0\n2 1 0x\n3 0 1\n", 3, "expected a number for the y coordinate"},

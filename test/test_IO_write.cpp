@@ -5,8 +5,10 @@
 // Tests for the writers of CGAL/Quad_mesher_2/IO/: each file is written, parsed back here
 // and compared exactly with the mesh.
 
+#include <CGAL/Quad_mesher_2/IO/write_INP.h>
 #include <CGAL/Quad_mesher_2/IO/write_MSH.h>
 #include <CGAL/Quad_mesher_2/IO/write_OFF.h>
+#include <CGAL/Quad_mesher_2/IO/write_SU2.h>
 #include <CGAL/Quad_mesher_2/IO/write_SVG.h>
 #include <CGAL/Quad_mesher_2/IO/write_VTU.h>
 #include <CGAL/Quad_mesher_2/IO/write_quad_mesh.h>
@@ -16,11 +18,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <random>
+#include <set>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -39,6 +44,14 @@ inline Mesh make_test_mesh()
   m.points = {Point(0, 0),           Point(third, qm2_test::FT(1e-7)), Point(third, 1),
               Point(-123456.789, 1), Point(1, 0.1),                    Point(1, 1)};
   m.quads = {{0, 1, 2, 3}, {1, 4, 5, 2}};
+  return m;
+}
+
+/// The test mesh with its boundary edges, markers 3, 7, 5 and -2 in no order.
+inline Mesh make_marked_test_mesh()
+{
+  Mesh m = make_test_mesh();
+  m.boundary_edges = {{0, 1, 3}, {1, 4, 7}, {4, 5, 3}, {5, 2, -2}, {2, 3, 5}, {3, 0, 3}};
   return m;
 }
 
@@ -100,9 +113,11 @@ struct Read_back
 {
   std::vector<std::array<double, 3>> points;
   std::vector<std::array<std::size_t, 4>> quads; // 0-based
+  std::vector<std::array<long long, 3>> edges;    // boundary edges: 0-based ends, marker
 };
 
-/// A strict reader for the MSH 4.1 ASCII subset our writer produces.
+/// A strict reader for the MSH 4.1 ASCII subset our writer produces. Its boundary edges
+/// get the marker their curve's physical name gives (`marker_3`, `marker_m3` for -3).
 inline bool parse_msh41(const std::string& text, Read_back& out)
 {
   std::istringstream in(text);
@@ -111,16 +126,59 @@ inline bool parse_msh41(const std::string& text, Read_back& out)
   double version = 0;
   int file_type = -1, data_size = 0;
   if(!expect("$MeshFormat") || !(in >> version >> file_type >> data_size) || version != 4.1 ||
-     file_type != 0 || data_size != 8 || !expect("$EndMeshFormat"))
+     file_type != 0 || data_size != 8)
     return false;
+  if(!expect("$EndMeshFormat") || !(in >> tok))
+    return false;
+  std::map<int, int> marker_of_physical; // of the curves' physical tags
+  if(tok == "$PhysicalNames") {
+    std::size_t n = 0;
+    if(!(in >> n))
+      return false;
+    for(std::size_t i = 0; i < n; ++i) {
+      int dim = 0, tag = 0;
+      std::string name;
+      if(!(in >> dim >> tag >> name))
+        return false;
+      if(dim == 2 && (tag != 1 || name != "\"domain\""))
+        return false;
+      if(dim == 1) {
+        if(name.rfind("\"marker_", 0) != 0 || marker_of_physical.count(tag) != 0)
+          return false;
+        const std::string number = name.substr(8, name.size() - 9);
+        marker_of_physical[tag] = number[0] == 'm' ? -std::stoi(number.substr(1)) : std::stoi(number);
+      }
+    }
+    if(!expect("$EndPhysicalNames") || !(in >> tok))
+      return false;
+  }
   std::size_t np = 0, nc = 0, ns = 0, nv = 0;
-  if(!expect("$Entities") || !(in >> np >> nc >> ns >> nv) || np != 0 || nc != 0 || ns != 1 || nv != 0)
+  if(tok != "$Entities" || !(in >> np >> nc >> ns >> nv) || np != 0 || nc != marker_of_physical.size() || ns != 1 ||
+     nv != 0)
     return false;
-  int surface_tag = 0;
   double bb[6];
+  std::map<int, int> marker_of_curve;
+  for(std::size_t c = 0; c < nc; ++c) {
+    int curve = 0, physical = 0;
+    std::size_t nphys = 0, npoints = 0;
+    if(!(in >> curve >> bb[0] >> bb[1] >> bb[2] >> bb[3] >> bb[4] >> bb[5] >> nphys >> physical >> npoints) ||
+       nphys != 1 || npoints != 0 || marker_of_physical.count(physical) == 0)
+      return false;
+    marker_of_curve[curve] = marker_of_physical[physical];
+  }
+  int surface_tag = 0;
   std::size_t nphys = 0, nbound = 0;
-  if(!(in >> surface_tag >> bb[0] >> bb[1] >> bb[2] >> bb[3] >> bb[4] >> bb[5] >> nphys >> nbound) ||
-     nphys != 0 || nbound != 0 || !expect("$EndEntities"))
+  if(!(in >> surface_tag >> bb[0] >> bb[1] >> bb[2] >> bb[3] >> bb[4] >> bb[5] >> nphys))
+    return false;
+  for(std::size_t i = 0; i < nphys; ++i)
+    if(!(in >> tok) || tok != "1")
+      return false;
+  if(!(in >> nbound) || nbound != nc)
+    return false;
+  for(std::size_t i = 0; i < nbound; ++i)
+    if(!(in >> tok) || marker_of_curve.count(std::stoi(tok)) == 0)
+      return false;
+  if(nphys != (nc == 0 ? 0 : 1) || !expect("$EndEntities"))
     return false;
 
   std::size_t nblocks = 0, nnodes = 0, mintag = 0, maxtag = 0;
@@ -146,28 +204,35 @@ inline bool parse_msh41(const std::string& text, Read_back& out)
   if(!expect("$EndNodes"))
     return false;
 
-  std::size_t nelem = 0;
+  std::size_t nelem = 0, next_tag = 1;
   if(!expect("$Elements") || !(in >> nblocks >> nelem >> mintag >> maxtag))
     return false;
   for(std::size_t b = 0; b < nblocks; ++b) {
     int dim = 0, tag = 0, type = 0;
     std::size_t n = 0;
-    if(!(in >> dim >> tag >> type >> n) || dim != 2 || tag != surface_tag || type != 3)
+    if(!(in >> dim >> tag >> type >> n))
+      return false;
+    const bool quads = dim == 2 && tag == surface_tag && type == 3;
+    const bool lines = dim == 1 && marker_of_curve.count(tag) != 0 && type == 1 && !out.quads.empty();
+    if(!quads && !lines)
       return false;
     for(std::size_t e = 0; e < n; ++e) {
       std::size_t etag = 0;
-      std::array<std::size_t, 4> q;
-      if(!(in >> etag >> q[0] >> q[1] >> q[2] >> q[3]))
+      std::array<std::size_t, 4> q{};
+      if(!(in >> etag) || etag != next_tag++)
         return false;
-      for(auto& v : q) {
-        if(v < 1 || v > nnodes)
+      for(int k = 0; k < (quads ? 4 : 2); ++k) {
+        if(!(in >> q[k]) || q[k] < 1 || q[k] > nnodes)
           return false;
-        --v;
+        --q[k];
       }
-      out.quads.push_back(q);
+      if(quads)
+        out.quads.push_back(q);
+      else
+        out.edges.push_back({(long long)q[0], (long long)q[1], marker_of_curve[tag]});
     }
   }
-  return out.quads.size() == nelem && expect("$EndElements");
+  return out.quads.size() + out.edges.size() == nelem && expect("$EndElements");
 }
 
 /// The whitespace-separated tokens between the `>` of the opening tag that contains
@@ -187,6 +252,7 @@ inline std::vector<std::string> vtu_data_array(const std::string& text, const st
   return tokens;
 }
 
+/// Reads the quads, then the lines (the boundary edges, with their `marker`), of a VTU file.
 inline bool parse_vtu(const std::string& text, Read_back& out)
 {
   if(text.find("<VTKFile type=\"UnstructuredGrid\"") == std::string::npos)
@@ -195,18 +261,27 @@ inline bool parse_vtu(const std::string& text, Read_back& out)
   const std::vector<std::string> conn = vtu_data_array(text, "Name=\"connectivity\"");
   const std::vector<std::string> offs = vtu_data_array(text, "Name=\"offsets\"");
   const std::vector<std::string> types = vtu_data_array(text, "Name=\"types\"");
-  if(pts.size() % 3 != 0 || conn.size() % 4 != 0 || offs.size() != conn.size() / 4 ||
-     types.size() != offs.size())
+  const std::vector<std::string> markers = vtu_data_array(text, "Name=\"marker\"");
+  if(pts.size() % 3 != 0 || types.size() != offs.size() || markers.size() != offs.size())
     return false;
   for(std::size_t i = 0; i < pts.size(); i += 3)
     out.points.push_back({std::stod(pts[i]), std::stod(pts[i + 1]), std::stod(pts[i + 2])});
+  std::size_t begin = 0;
   for(std::size_t c = 0; c < offs.size(); ++c) {
-    if(std::stoul(types[c]) != 9 || std::stoul(offs[c]) != 4 * (c + 1))
+    const std::size_t type = std::stoul(types[c]), end = std::stoul(offs[c]);
+    const long long marker = std::stoll(markers[c]);
+    if(end > conn.size() || end != begin + (type == 9 ? 4 : 2))
       return false;
-    out.quads.push_back({std::stoul(conn[4 * c]), std::stoul(conn[4 * c + 1]),
-                         std::stoul(conn[4 * c + 2]), std::stoul(conn[4 * c + 3])});
+    if(type == 9 && out.edges.empty() && marker == 0)
+      out.quads.push_back({std::stoul(conn[begin]), std::stoul(conn[begin + 1]), std::stoul(conn[begin + 2]),
+                           std::stoul(conn[begin + 3])});
+    else if(type == 3)
+      out.edges.push_back({std::stoll(conn[begin]), std::stoll(conn[begin + 1]), marker});
+    else
+      return false; // another type, or a quad after the lines
+    begin = end;
   }
-  return true;
+  return begin == conn.size();
 }
 
 inline bool parse_off(const std::string& text, Read_back& out)
@@ -233,6 +308,104 @@ inline bool parse_off(const std::string& text, Read_back& out)
   return !(in >> extra);
 }
 
+/// A strict reader for the SU2 files our writer produces: the boundary edges' markers are
+/// their MARKER_TAGs.
+inline bool parse_su2(const std::string& text, Read_back& out)
+{
+  std::istringstream in(text);
+  std::string key;
+  std::size_t nelem = 0, npoin = 0, nmark = 0, index = 0;
+  if(!(in >> key) || key != "NDIME=" || !(in >> index) || index != 2 || !(in >> key) || key != "NELEM=" || !(in >> nelem))
+    return false;
+  for(std::size_t e = 0; e < nelem; ++e) {
+    int type = 0;
+    std::array<std::size_t, 4> q;
+    if(!(in >> type >> q[0] >> q[1] >> q[2] >> q[3] >> index) || type != 9 || index != e)
+      return false;
+    out.quads.push_back(q);
+  }
+  if(!(in >> key) || key != "NPOIN=" || !(in >> npoin))
+    return false;
+  for(std::size_t p = 0; p < npoin; ++p) {
+    std::string sx, sy;
+    if(!(in >> sx >> sy >> index) || index != p)
+      return false;
+    out.points.push_back({std::stod(sx), std::stod(sy), 0.0});
+  }
+  if(!(in >> key) || key != "NMARK=" || !(in >> nmark))
+    return false;
+  for(std::size_t m = 0; m < nmark; ++m) {
+    long long marker = 0;
+    std::size_t n = 0;
+    if(!(in >> key) || key != "MARKER_TAG=" || !(in >> marker >> key) || key != "MARKER_ELEMS=" || !(in >> n))
+      return false;
+    for(std::size_t e = 0; e < n; ++e) {
+      int type = 0;
+      long long a = 0, b = 0;
+      if(!(in >> type >> a >> b) || type != 3 || a < 0 || b < 0 || a >= (long long)npoin || b >= (long long)npoin)
+        return false;
+      out.edges.push_back({a, b, marker});
+    }
+  }
+  return !(in >> key);
+}
+
+/// The data lines of an Abaqus file after each keyword line, split at commas.
+inline std::vector<std::pair<std::string, std::vector<std::vector<std::string>>>> inp_sections(const std::string& text)
+{
+  std::vector<std::pair<std::string, std::vector<std::vector<std::string>>>> sections;
+  std::istringstream in(text);
+  std::string line;
+  while(std::getline(in, line)) {
+    if(line.rfind("*", 0) == 0) {
+      sections.push_back({line, {}});
+      continue;
+    }
+    std::vector<std::string> fields;
+    std::istringstream f(line);
+    std::string field;
+    while(std::getline(f, field, ','))
+      fields.push_back(field);
+    if(sections.empty())
+      return {};
+    sections.back().second.push_back(fields);
+  }
+  return sections;
+}
+
+/// Reads the nodes and quads of an Abaqus file as our writer writes it, and its node sets.
+inline bool parse_inp(const std::string& text, Read_back& out, std::map<std::string, std::set<std::size_t>>& nsets)
+{
+  const auto sections = inp_sections(text);
+  if(sections.size() < 3 || sections[0].first != "*HEADING" || sections[1].first != "*NODE" ||
+     sections[2].first != "*ELEMENT, TYPE=CPS4, ELSET=domain")
+    return false;
+  for(const auto& f : sections[1].second) {
+    if(f.size() != 3 || std::stoul(f[0]) != out.points.size() + 1)
+      return false;
+    out.points.push_back({std::stod(f[1]), std::stod(f[2]), 0.0});
+  }
+  for(const auto& f : sections[2].second) {
+    if(f.size() != 5 || std::stoul(f[0]) != out.quads.size() + 1)
+      return false;
+    out.quads.push_back({std::stoul(f[1]) - 1, std::stoul(f[2]) - 1, std::stoul(f[3]) - 1, std::stoul(f[4]) - 1});
+  }
+  for(std::size_t s = 3; s < sections.size(); ++s) {
+    const std::string head = "*NSET, NSET=";
+    if(sections[s].first.rfind(head, 0) != 0)
+      return false;
+    std::set<std::size_t>& set = nsets[sections[s].first.substr(head.size())];
+    for(const auto& f : sections[s].second) {
+      if(f.size() > 16)
+        return false;
+      for(const std::string& node : f)
+        if(!set.insert(std::stoul(node) - 1).second || *set.rbegin() >= out.points.size())
+          return false;
+    }
+  }
+  return true;
+}
+
 /// Exact comparison of what was read back with the mesh.
 inline void expect_same(const Mesh& m, const Read_back& r)
 {
@@ -245,6 +418,14 @@ inline void expect_same(const Mesh& m, const Read_back& r)
   }
   for(std::size_t i = 0; i < m.quads.size(); ++i)
     EXPECT_EQ(r.quads[i], m.quads[i]) << "quad " << i;
+  // the edges as a set: the writers group them by marker
+  std::vector<std::array<long long, 3>> edges;
+  for(const auto& e : m.boundary_edges)
+    edges.push_back({(long long)e.v0, (long long)e.v1, e.marker});
+  std::vector<std::array<long long, 3>> read = r.edges;
+  std::sort(edges.begin(), edges.end());
+  std::sort(read.begin(), read.end());
+  EXPECT_EQ(read, edges);
 }
 
 } // namespace qm2_test_io_write
@@ -265,6 +446,35 @@ TEST(IOWrite, MSHRoundTrip)
   EXPECT_EQ(slurp(path), os.str());
 }
 
+TEST(IOWrite, MSHBoundaryEdgesByMarker)
+{
+  using namespace qm2_test_io_write;
+  const Mesh m = make_marked_test_mesh();
+  std::ostringstream os;
+  ASSERT_TRUE(CGAL::Quad_mesher_2::IO::write_MSH(os, m));
+  const std::string text = os.str();
+  Read_back r;
+  ASSERT_TRUE(parse_msh41(text, r)) << text;
+  expect_same(m, r);
+  // a marker is not positive: physical tags 1..4 by increasing marker, names keep the markers
+  EXPECT_NE(text.find("$PhysicalNames\n5\n1 1 \"marker_m2\"\n1 2 \"marker_3\"\n1 3 \"marker_5\"\n"
+                      "1 4 \"marker_7\"\n2 1 \"domain\"\n$EndPhysicalNames\n"),
+            std::string::npos) << text;
+  // the quads first, tags 1 and 2; then marker -2's curve 1 with its one line, tag 3
+  EXPECT_NE(text.find("$Elements\n5 8 1 8\n2 1 3 2\n1 1 2 3 4\n2 2 5 6 3\n1 1 1 1\n3 6 3\n"), std::string::npos)
+    << text;
+  // every marker positive: the markers are the physical tags
+  Mesh positive = m;
+  positive.boundary_edges[3].marker = 7;
+  std::ostringstream pos;
+  ASSERT_TRUE(CGAL::Quad_mesher_2::IO::write_MSH(pos, positive));
+  EXPECT_NE(pos.str().find("$PhysicalNames\n4\n1 3 \"marker_3\"\n1 5 \"marker_5\"\n1 7 \"marker_7\"\n"),
+            std::string::npos) << pos.str();
+  Read_back rp;
+  ASSERT_TRUE(parse_msh41(pos.str(), rp));
+  expect_same(positive, rp);
+}
+
 TEST(IOWrite, VTURoundTrip)
 {
   using namespace qm2_test_io_write;
@@ -282,6 +492,78 @@ TEST(IOWrite, VTURoundTrip)
   const std::string path = temp_path("mesh.vtu");
   ASSERT_TRUE(CGAL::Quad_mesher_2::IO::write_VTU(path, m));
   EXPECT_EQ(slurp(path), text);
+}
+
+TEST(IOWrite, VTUBoundaryEdgesAfterTheQuads)
+{
+  using namespace qm2_test_io_write;
+  const Mesh m = make_marked_test_mesh();
+  std::ostringstream os;
+  ASSERT_TRUE(CGAL::Quad_mesher_2::IO::write_VTU(os, m));
+  const std::string text = os.str();
+  EXPECT_NE(text.find("NumberOfPoints=\"6\" NumberOfCells=\"8\""), std::string::npos);
+  EXPECT_EQ(vtu_data_array(text, "Name=\"types\""),
+            (std::vector<std::string>{"9", "9", "3", "3", "3", "3", "3", "3"}));
+  EXPECT_EQ(vtu_data_array(text, "Name=\"max_angle_deviation\"").size(), 8u);
+  Read_back r;
+  ASSERT_TRUE(parse_vtu(text, r)) << text;
+  expect_same(m, r);
+}
+
+TEST(IOWrite, SU2QuadsPointsAndAMarkerPerTag)
+{
+  using namespace qm2_test_io_write;
+  const Mesh m = make_marked_test_mesh();
+  std::ostringstream os;
+  ASSERT_TRUE(CGAL::Quad_mesher_2::IO::write_SU2(os, m));
+  const std::string text = os.str();
+  Read_back r;
+  ASSERT_TRUE(parse_su2(text, r)) << text;
+  expect_same(m, r);
+  // the markers in increasing order, the edges of each in the mesh's order
+  EXPECT_NE(text.find("NMARK= 4\nMARKER_TAG= -2\nMARKER_ELEMS= 1\n3 5 2\nMARKER_TAG= 3\nMARKER_ELEMS= 3\n"
+                      "3 0 1\n3 4 5\n3 3 0\n"),
+            std::string::npos) << text;
+  Read_back unmarked;
+  std::ostringstream plain;
+  ASSERT_TRUE(CGAL::Quad_mesher_2::IO::write_SU2(plain, make_test_mesh()));
+  ASSERT_TRUE(parse_su2(plain.str(), unmarked)) << plain.str();
+  EXPECT_NE(plain.str().find("NMARK= 0\n"), std::string::npos);
+}
+
+TEST(IOWrite, INPNodesElementsAndANodeSetPerMarker)
+{
+  using namespace qm2_test_io_write;
+  const Mesh m = make_marked_test_mesh();
+  std::ostringstream os;
+  ASSERT_TRUE(CGAL::Quad_mesher_2::IO::write_INP(os, m));
+  Read_back r;
+  std::map<std::string, std::set<std::size_t>> nsets;
+  ASSERT_TRUE(parse_inp(os.str(), r, nsets)) << os.str();
+  Mesh without_edges = m; // the edges' markers are in the node sets
+  without_edges.boundary_edges.clear();
+  expect_same(without_edges, r);
+  const std::map<std::string, std::set<std::size_t>> expected = {
+    {"marker_m2", {2, 5}}, {"marker_3", {0, 1, 3, 4, 5}}, {"marker_5", {2, 3}}, {"marker_7", {1, 4}}};
+  EXPECT_EQ(nsets, expected);
+
+  // 16 nodes a line at most
+  Mesh strip;
+  for(int i = 0; i <= 20; ++i) {
+    strip.points.push_back(Point(i, 0));
+    strip.points.push_back(Point(i, 1));
+  }
+  for(std::size_t i = 0; i < 20; ++i) {
+    strip.quads.push_back({2 * i, 2 * i + 2, 2 * i + 3, 2 * i + 1});
+    strip.boundary_edges.push_back({2 * i, 2 * i + 2, 1});
+  }
+  std::ostringstream long_set;
+  ASSERT_TRUE(CGAL::Quad_mesher_2::IO::write_INP(long_set, strip));
+  Read_back rs;
+  nsets.clear();
+  ASSERT_TRUE(parse_inp(long_set.str(), rs, nsets)) << long_set.str();
+  EXPECT_EQ(nsets["marker_1"].size(), 21u);
+  EXPECT_EQ(nsets.size(), 1u);
 }
 
 TEST(IOWrite, OFFRoundTrip)
@@ -431,11 +713,15 @@ TEST(IOWrite, DispatchByExtension)
   ASSERT_TRUE(QIO::write_quad_mesh(dir + "a.vtu", m));
   ASSERT_TRUE(QIO::write_quad_mesh(dir + "a.off", m));
   ASSERT_TRUE(QIO::write_quad_mesh(dir + "a.svg", m));
+  ASSERT_TRUE(QIO::write_quad_mesh(dir + "a.su2", m));
+  ASSERT_TRUE(QIO::write_quad_mesh(dir + "a.inp", m));
   ASSERT_TRUE(QIO::write_quad_mesh(dir + "b.MSH", m)); // case-insensitive
   EXPECT_EQ(slurp(dir + "a.msh").rfind("$MeshFormat", 0), 0u);
   EXPECT_NE(slurp(dir + "a.vtu").find("<VTKFile type=\"UnstructuredGrid\""), std::string::npos);
   EXPECT_EQ(slurp(dir + "a.off").rfind("OFF\n", 0), 0u);
   EXPECT_NE(slurp(dir + "a.svg").find("<svg"), std::string::npos);
+  EXPECT_EQ(slurp(dir + "a.su2").rfind("NDIME= 2\n", 0), 0u);
+  EXPECT_EQ(slurp(dir + "a.inp").rfind("*HEADING\n", 0), 0u);
   EXPECT_EQ(slurp(dir + "b.MSH"), slurp(dir + "a.msh"));
 
   Read_back r;
@@ -470,6 +756,17 @@ TEST(IOWrite, FailuresReturnFalse)
   std::ofstream throwing;
   throwing.exceptions(std::ios::badbit | std::ios::failbit);
   EXPECT_NO_THROW(EXPECT_FALSE(QIO::write_VTU(throwing, m)));
+
+  // Out-of-range boundary-edge index.
+  Mesh bad_edge = make_marked_test_mesh();
+  bad_edge.boundary_edges.push_back({0, 6, 1});
+  std::ostringstream edge_os;
+  EXPECT_FALSE(QIO::write_MSH(edge_os, bad_edge));
+  EXPECT_FALSE(QIO::write_VTU(edge_os, bad_edge));
+  EXPECT_FALSE(QIO::write_SU2(edge_os, bad_edge));
+  EXPECT_FALSE(QIO::write_INP(edge_os, bad_edge));
+  EXPECT_FALSE(QIO::write_SU2(bad + ".su2", m));
+  EXPECT_FALSE(QIO::write_INP(bad + ".inp", m));
 
   // Out-of-range quad index.
   Mesh broken = m;

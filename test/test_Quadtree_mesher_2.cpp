@@ -14,9 +14,13 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <random>
+#include <utility>
+#include <vector>
 
 namespace qm2_test_mesher {
 
@@ -300,6 +304,70 @@ TEST(Quadtree_mesher_2, make_quad_mesh_2_meshes_a_domain_up_to_its_boundary)
   Domain cloud;
   cloud.points = d.points;
   EXPECT_EQ(QM::last_stage(cloud), QM::Stage::POINTS);
+}
+
+// The square with a square hole of make_quad_mesh_2_meshes_a_domain_up_to_its_boundary.
+Domain square_with_hole()
+{
+  Domain d;
+  d.points = { K::Point_2(0, 0),     K::Point_2(4, 0),     K::Point_2(4, 4),     K::Point_2(0, 4),
+               K::Point_2(1.5, 1.5), K::Point_2(2.5, 1.5), K::Point_2(2.5, 2.5), K::Point_2(1.5, 2.5) };
+  d.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 4, 5 }, { 5, 6 }, { 6, 7 }, { 7, 4 } };
+  d.holes = { K::Point_2(2, 2) };
+  return d;
+}
+
+// the marker each boundary edge of `mesh` should have, by the side of the square or hole it
+// lies on (`side_markers`: bottom, right, top, left, hole); -1 if it lies on none
+int expected_marker(const QM::Quad_mesh_2<K::Point_2>& mesh, std::size_t a, std::size_t b,
+                    const std::array<int, 5>& side_markers)
+{
+  const K::Point_2 &p = mesh.points[a], &q = mesh.points[b];
+  if(p.y() == 0 && q.y() == 0) return side_markers[0];
+  if(p.x() == 4 && q.x() == 4) return side_markers[1];
+  if(p.y() == 4 && q.y() == 4) return side_markers[2];
+  if(p.x() == 0 && q.x() == 0) return side_markers[3];
+  const bool on_hole = (p.x() == 1.5 || p.x() == 2.5 || p.y() == 1.5 || p.y() == 2.5)
+                       && (q.x() == 1.5 || q.x() == 2.5 || q.y() == 1.5 || q.y() == 2.5);
+  return on_hole ? side_markers[4] : -1;
+}
+
+TEST(Quadtree_mesher_2, boundary_edges_carry_the_segment_markers)
+{
+  Domain d = square_with_hole();
+  for(const bool marked : { true, false }) {
+    SCOPED_TRACE(marked ? "segment markers" : "loop numbers");
+    d.segment_markers = marked ? std::vector<int>{ 3, 4, 5, 6, -1, -1, -1, -1 } : std::vector<int>{};
+    const std::array<int, 5> side_markers = marked ? std::array<int, 5>{ 3, 4, 5, 6, -1 }
+                                                   : std::array<int, 5>{ 1, 1, 1, 1, 2 };
+    const auto mesh = QM::make_quad_mesh_2(d);
+    std::map<std::pair<std::size_t, std::size_t>, int> uses; // directed quad edges
+    for(const auto& q : mesh.quads)
+      for(int c = 0; c < 4; ++c) ++uses[{ q[c], q[(c + 1) % 4] }];
+    std::map<int, double> length;
+    for(const auto& e : mesh.boundary_edges) {
+      const std::pair<std::size_t, std::size_t> edge(e.v0, e.v1), reverse(e.v1, e.v0);
+      EXPECT_EQ(uses[edge], 1) << "not an edge of a quad as it runs";
+      EXPECT_EQ(uses.count(reverse), 0u) << "an inner edge";
+      EXPECT_EQ(e.marker, expected_marker(mesh, e.v0, e.v1, side_markers));
+      length[e.marker] += std::sqrt(CGAL::to_double(CGAL::squared_distance(mesh.points[e.v0], mesh.points[e.v1])));
+    }
+    std::size_t boundary = 0;
+    for(const auto& [edge, n] : uses) boundary += uses.count({ edge.second, edge.first }) == 0 ? 1 : 0;
+    EXPECT_EQ(mesh.boundary_edges.size(), boundary);
+    if(marked) {
+      for(int m : { 3, 4, 5, 6 }) EXPECT_NEAR(length[m], 4, 1e-12) << "marker " << m;
+      EXPECT_NEAR(length[-1], 4, 1e-12);
+    } else {
+      EXPECT_NEAR(length[1], 16, 1e-12);
+      EXPECT_NEAR(length[2], 4, 1e-12);
+    }
+  }
+  // before the boundary is reached there are none
+  EXPECT_TRUE(QM::make_quad_mesh_2(d, Criteria(), QM::Stage::BUFFER1).boundary_edges.empty());
+  // one marker per segment, or none
+  d.segment_markers = { 1, 2 };
+  EXPECT_THROW(QM::make_quad_mesh_2(d), QM::Meshing_error);
 }
 
 TEST(Quadtree_mesher_2, stage_timings_are_recorded)

@@ -85,6 +85,32 @@ TEST(quad_mesher_cli, meshes_lake_superior_with_every_output_and_a_report)
   EXPECT_EQ(report["angle_histogram_5deg"].size(), 72u);
 }
 
+TEST(quad_mesher_cli, solver_formats_carry_the_segment_markers)
+{
+  // the .poly's segment markers: 1 on the far field, 2 on the air foil
+  const std::string naca = std::string(QM2_DATA_DIR) + "/naca0012/naca0012_sharp.poly";
+  auto msh = scratch("naca.msh"), su2 = scratch("naca.su2"), inp = scratch("naca.inp"), vtu = scratch("naca.vtu");
+  Cli_run r = run(naca + " --kernel " + kernel_name + " -o " + msh.string() + " -o " + su2.string() + " -o " +
+                  inp.string() + " -o " + vtu.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string m = slurp(msh), s = slurp(su2), i = slurp(inp), v = slurp(vtu);
+  EXPECT_NE(m.find("$PhysicalNames\n3\n1 1 \"marker_1\"\n1 2 \"marker_2\"\n2 1 \"domain\"\n"), std::string::npos);
+  EXPECT_NE(s.find("NMARK= 2\nMARKER_TAG= 1\n"), std::string::npos);
+  EXPECT_NE(s.find("\nMARKER_TAG= 2\n"), std::string::npos);
+  EXPECT_NE(i.find("\n*NSET, NSET=marker_1\n"), std::string::npos);
+  EXPECT_NE(i.find("\n*NSET, NSET=marker_2\n"), std::string::npos);
+  EXPECT_NE(v.find("Name=\"marker\""), std::string::npos);
+  // the same quads in each: the count the SU2 file gives, in the others
+  const std::size_t at = s.find("NELEM= ") + 7;
+  const std::string quads = s.substr(at, s.find('\n', at) - at);
+  EXPECT_NE(m.find("\n2 1 3 " + quads + "\n"), std::string::npos) << quads;
+  EXPECT_NE(i.find("\n" + quads + ", "), std::string::npos);
+  // a format the tool does not write is a usage error naming those it does
+  r = run(naca + " -o " + scratch("naca.stl").string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find(".su2, .inp"), std::string::npos) << r.err;
+}
+
 TEST(quad_mesher_cli, both_kernels_give_the_same_mesh)
 {
   auto a = scratch("k_epick.json"), b = scratch("k_epeck.json"), m = scratch("k.off");

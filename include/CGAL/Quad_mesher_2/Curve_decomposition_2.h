@@ -625,10 +625,11 @@ std::vector<typename K::Point_2> decompose_closed_spline(const std::vector<typen
 /// domain on the left of each (outer loops counterclockwise, holes clockwise; the paper lists
 /// its curves clockwise, this package's convention is the one `extract_loops()` normalises
 /// to), each labelled by the span of the spline it lies on (`on the spline from 1 (line 2) to
-/// 2 (line 3)`), and its hole points are `domain.holes`, with their labels. A point cloud
-/// (no segments) is returned unchanged. The default tolerance is 1e-3 of the diagonal of the
-/// bounding box of all the domain's points, so that every loop is held to the same absolute
-/// error.
+/// 2 (line 3)`) and carrying the marker of the control polygon's segment its span replaces
+/// (if `domain.segment_markers` is not empty), and its hole points are `domain.holes`, with
+/// their labels. A point cloud (no segments) is returned unchanged. The default tolerance is
+/// 1e-3 of the diagonal of the bounding box of all the domain's points, so that every loop is
+/// held to the same absolute error.
 ///
 /// The result is validated with `extract_loops()`: each spline alone must be simple, and the
 /// splines must not cross one another or pass over a hole point or a point on no segment
@@ -655,7 +656,10 @@ Domain_2<K> decompose_domain_curves(const Domain_2<K>& domain, const Curve_decom
   out.hole_labels = domain.hole_labels;
   out.point_labels.reserve(domain.points.size());
   for(std::size_t i = 0; i < domain.points.size(); ++i) out.point_labels.push_back(domain.point_label(i));
-  for(const Boundary_loop_2<K>& loop : loops.loops) {
+  // each new segment keeps the marker of the control polygon's edge its span replaces
+  const std::vector<std::vector<int>> edge_markers = internal::loop_edge_markers(domain, loops);
+  for(std::size_t l = 0; l < loops.loops.size(); ++l) {
+    const Boundary_loop_2<K>& loop = loops.loops[l];
     std::vector<typename K::Point_2> control;
     std::vector<std::string> control_labels;
     control.reserve(loop.vertices.size());
@@ -687,6 +691,11 @@ Domain_2<K> decompose_domain_curves(const Domain_2<K>& domain, const Curve_decom
     for(std::size_t v = 0; v < poly.size(); ++v) out.segments.push_back({index[v], index[(v + 1) % poly.size()]});
     const std::vector<std::string> spans = internal::curves_span_labels(knot_index, poly.size(), control_labels);
     out.segment_labels.insert(out.segment_labels.end(), spans.begin(), spans.end());
+    if(!domain.segment_markers.empty())
+      for(std::size_t k = 0; k < knot_index.size(); ++k) {
+        const std::size_t end = k + 1 < knot_index.size() ? knot_index[k + 1] : poly.size();
+        out.segment_markers.insert(out.segment_markers.end(), end - knot_index[k], edge_markers[l][k]);
+      }
   }
   // Each loop is simple on its own; the whole must still be a boundary: a spline that bulges
   // beyond its control polygon may cross another loop or pass over a hole point or a point on

@@ -28,6 +28,9 @@ namespace Quad_mesher_2 {
 /// - <em>Isolated points</em> are the points on no segment; each must lie strictly inside the
 ///   domain, and the points stage (`Mesh_criteria_2::points_as_vertices()`, the default) makes
 ///   each one a mesh vertex.
+/// - `segment_markers`: optional, one boundary marker per segment (a `.poly` file's segment
+///   markers); the mesh's boundary edges carry them (`Quad_mesh_2::boundary_edges`). Empty if
+///   the input has none: each loop's edges then carry the loop's number instead.
 /// - A <em>point cloud</em> is a `Domain_2` without segments (`is_point_cloud()`): every
 ///   point becomes a mesh vertex.
 template <class GeomTraits>
@@ -39,6 +42,7 @@ struct Domain_2
   std::vector<Point_2> points;
   std::vector<Segment> segments;
   std::vector<Point_2> holes;
+  std::vector<int> segment_markers; // empty, or one per segment
   /// Optional, for error messages: how the user knows point `i`, segment `s`, hole `h`. The readers
   /// give the file's own numbering and line (`"5 (line 7)"` in a 1-based `.poly`); where
   /// these are empty, messages give the 0-based index.

@@ -165,6 +165,9 @@ private:
   void check_segments()
   {
     const std::size_t np = m_d.points.size(), ns = m_d.segments.size();
+    if(!m_d.segment_markers.empty() && m_d.segment_markers.size() != ns)
+      throw Meshing_error("the domain has " + std::to_string(m_d.segment_markers.size()) + " segment markers for " +
+                          std::to_string(ns) + " segments: give one per segment, or none");
     m_degree.assign(np, 0);
     for(std::size_t s = 0; s < ns; ++s) {
       const auto& sg = m_d.segments[s];
@@ -569,6 +572,40 @@ Polygon_2<K> loop_polygon_2(const Domain_2<K>& domain, const Boundary_loop_2<K>&
   for(std::size_t v : loop.vertices) poly.push_back(domain.points[v]);
   return poly;
 }
+
+namespace internal {
+
+/// The boundary marker of every loop edge: `[l][k]` for the edge from vertex k to vertex k + 1
+/// of loop l, the `Domain_2::segment_markers` entry of its segment or, where the domain has
+/// none, l + 1 (the loops numbered from 1 as `extract_loops()` orders them, outermost first).
+template <class K>
+std::vector<std::vector<int>> loop_edge_markers(const Domain_2<K>& domain, const Domain_loops_2<K>& loops)
+{
+  // the segments by their ends, lower first: extract_loops() has rejected repeated ones
+  std::vector<std::array<std::size_t, 3>> by_ends;
+  by_ends.reserve(domain.segment_markers.size());
+  for(std::size_t s = 0; s < domain.segment_markers.size(); ++s) {
+    const auto& sg = domain.segments[s];
+    by_ends.push_back({ (std::min)(sg[0], sg[1]), (std::max)(sg[0], sg[1]), s });
+  }
+  std::sort(by_ends.begin(), by_ends.end());
+  std::vector<std::vector<int>> markers(loops.loops.size());
+  for(std::size_t l = 0; l < loops.loops.size(); ++l) {
+    const auto& v = loops.loops[l].vertices;
+    markers[l].assign(v.size(), int(l + 1));
+    if(by_ends.empty()) continue;
+    for(std::size_t k = 0; k < v.size(); ++k) {
+      const std::size_t a = v[k], b = v[(k + 1) % v.size()];
+      const std::array<std::size_t, 3> key{ { (std::min)(a, b), (std::max)(a, b), 0 } };
+      const auto it = std::lower_bound(by_ends.begin(), by_ends.end(), key);
+      CGAL_assertion(it != by_ends.end() && (*it)[0] == key[0] && (*it)[1] == key[1]);
+      markers[l][k] = domain.segment_markers[(*it)[2]];
+    }
+  }
+  return markers;
+}
+
+} // namespace internal
 
 } // namespace Quad_mesher_2
 } // namespace CGAL

@@ -25,13 +25,30 @@ struct Quad_mesh_2
 {
   typedef Point_2_ Point_2;
   typedef std::array<std::size_t, 4> Quad;
+  /// an edge of the mesh's boundary, from `v0` to `v1` (indices into `points`), and the
+  /// boundary marker of the input segment it lies on
+  struct Boundary_edge
+  {
+    std::size_t v0, v1;
+    int marker;
+  };
 
   std::vector<Point_2> points;
   std::vector<Quad> quads;
+  /// For a mesh of a whole domain (`Stage::BUFFER2`, the default for a domain bounded by
+  /// segments): every boundary edge (the edge of one quad only), directed as its quad runs
+  /// (the domain on its left), in the order of the quads, with the marker of the input
+  /// segment it lies on: its `Domain_2::segment_markers` entry, or where the domain has none
+  /// its loop's number, from 1, outer loop first (the order of `extract_loops()`). An edge
+  /// over an input vertex the mesh leaves out (within the chord tolerance) takes the marker
+  /// of the segment nearest its midpoint. Empty after the earlier stages and for a point
+  /// cloud, whose boundary is not the input's. The MSH, VTU, SU2 and INP writers write these
+  /// edges with the quads; they change neither `points` nor `quads`.
+  std::vector<Boundary_edge> boundary_edges;
 
   std::size_t number_of_vertices() const { return points.size(); }
   std::size_t number_of_quads() const { return quads.size(); }
-  void clear() { points.clear(); quads.clear(); }
+  void clear() { points.clear(); quads.clear(); boundary_edges.clear(); }
 };
 
 /// \ingroup PkgQuadMesher2Ref

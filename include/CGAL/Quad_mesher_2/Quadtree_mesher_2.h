@@ -14,6 +14,7 @@
 #include <CGAL/Quad_mesher_2/Point_anchor.h>
 #include <CGAL/Quad_mesher_2/Quad_mesh_2.h>
 #include <CGAL/Quad_mesher_2/internal/apply_templates.h>
+#include <CGAL/Quad_mesher_2/internal/boundary_markers.h>
 #include <CGAL/Quad_mesher_2/internal/buffer_layers.h>
 #include <CGAL/Quad_mesher_2/internal/buffer_zone_clearance.h>
 #include <CGAL/Quad_mesher_2/internal/insert_points.h>
@@ -234,75 +235,14 @@ public:
   /// quads. The valid round with the fewest such quads is the one returned (kept from its
   /// round if a later one was worse). The rounds end too once the refinement a round asked
   /// for splits no cell (finer cells are refused there): the next round would repeat it.
+  /// A mesh of the whole domain (`last` is `Stage::BUFFER2`) comes with its `boundary_edges`
+  /// and their markers.
   Mesh run(Stage last)
   {
-    m_refinement_queue.clear();
-    m_move_memo = internal::Move_memo();
-    m_round_figures.clear();
-    m_quality.reset();
-    m_rounds = Rounds(max_refinement_rounds, max_stalled_angle_rounds);
-    // the best valid round's mesh and state, kept while later rounds try for better angles:
-    // building it again would cost a whole round
-    Round_state best;
-    for(;;) {
-      const auto round_start = std::chrono::steady_clock::now();
-      m_rounds.start_round();
-      m_move_memo.next_round();
-      build_quadtree();
-      if(m_rounds.repeats_a_failure(m_requests_refined)) {
-        if(m_rounds.has_valid_round())
-          return restore_round(std::move(best));
-        throw Meshing_error(m_rounds.repeat_error());
-      }
-      Mesh mesh = core_mesh();
-      if(last >= Stage::POINTS && m_criteria.points_as_vertices())
-        insert_points(mesh);
-      if(last >= Stage::CLEARANCE)
-        clear_buffer_zone(mesh);
-      if(!m_lost_points.empty()) {
-        const std::vector<internal::Refinement_request> requests = lost_point_requests();
-        const std::size_t added = m_refinement_queue.add(*m_tree, requests);
-        if(m_rounds.refine_for_lost_points(added, lost_point_error(requests)))
-          continue;
-        if(m_rounds.has_valid_round())
-          return restore_round(std::move(best));
-        throw Meshing_error(lost_point_error(requests));
-      }
-      if(last <= Stage::CLEARANCE)
-        return mesh;
-      fill_buffer_zone(mesh, last);
-      const bool valid = check_whole_mesh(mesh);
-      // An invalid round is refined at its angles out too (refining for validity alone, then
-      // for angles, costs a whole round more); the buffer asks for none beside its invalid
-      // quads. A stage on its way is not refined for angles: they are the finished buffer's.
-      std::vector<internal::Refinement_request> requests;
-      if(!valid)
-        requests = m_buffer_requests.for_validity;
-      if(last >= Stage::BUFFER2)
-        requests.insert(requests.end(), m_buffer_requests.for_angles.begin(), m_buffer_requests.for_angles.end());
-      // Buffer nodes of two loops met across a narrow gap (a node on another's edge, or
-      // nearly on another node): the buffer's own checks do not see them. One level finer
-      // there, as for a bad quad.
-      for(const internal::Point_2d& p : m_flawed)
-        requests.emplace_back(p, 0.0);
-      record_round(mesh, valid, requests.size(), round_start);
-      const std::size_t bad = m_buffer_report.bad_angle_quads;
-      if(valid && (bad == 0 || last < Stage::BUFFER2))
-        return mesh;
-      const std::size_t added = m_refinement_queue.add(*m_tree, requests);
-      bool improved = false;
-      if(m_rounds.refine_for_buffer(valid, bad, added, improved, [&] { return buffer_error(requests, true); })) {
-        if(improved)
-          best = save_round(std::move(mesh));
-        continue;
-      }
-      if(valid && m_rounds.is_best(bad))
-        return mesh; // angles outside [45, 135] stay; the quality report shows them
-      if(m_rounds.has_valid_round())
-        return restore_round(std::move(best));
-      // not the round budget
-      throw Meshing_error(buffer_error(requests, added < requests.size() || m_tree->depth() >= m_tree->max_depth()));
-    }
+    Mesh mesh = run_rounds(last);
+    if(last >= Stage::BUFFER2)
+      mesh.boundary_edges = internal::marked_boundary_edges(mesh, m_domain, m_loops);
+    return mesh;
   }
 
   /// the whole-mesh check of the mesh the last `run()` returned (its `compute_quality()`),
@@ -379,6 +319,78 @@ public:
   const Mesh_criteria_2<GeomTraits>& criteria() const { return m_criteria; }
 
 private:
+  // run(last) but for the boundary edges
+  Mesh run_rounds(Stage last)
+  {
+    m_refinement_queue.clear();
+    m_move_memo = internal::Move_memo();
+    m_round_figures.clear();
+    m_quality.reset();
+    m_rounds = Rounds(max_refinement_rounds, max_stalled_angle_rounds);
+    // the best valid round's mesh and state, kept while later rounds try for better angles:
+    // building it again would cost a whole round
+    Round_state best;
+    for(;;) {
+      const auto round_start = std::chrono::steady_clock::now();
+      m_rounds.start_round();
+      m_move_memo.next_round();
+      build_quadtree();
+      if(m_rounds.repeats_a_failure(m_requests_refined)) {
+        if(m_rounds.has_valid_round())
+          return restore_round(std::move(best));
+        throw Meshing_error(m_rounds.repeat_error());
+      }
+      Mesh mesh = core_mesh();
+      if(last >= Stage::POINTS && m_criteria.points_as_vertices())
+        insert_points(mesh);
+      if(last >= Stage::CLEARANCE)
+        clear_buffer_zone(mesh);
+      if(!m_lost_points.empty()) {
+        const std::vector<internal::Refinement_request> requests = lost_point_requests();
+        const std::size_t added = m_refinement_queue.add(*m_tree, requests);
+        if(m_rounds.refine_for_lost_points(added, lost_point_error(requests)))
+          continue;
+        if(m_rounds.has_valid_round())
+          return restore_round(std::move(best));
+        throw Meshing_error(lost_point_error(requests));
+      }
+      if(last <= Stage::CLEARANCE)
+        return mesh;
+      fill_buffer_zone(mesh, last);
+      const bool valid = check_whole_mesh(mesh);
+      // An invalid round is refined at its angles out too (refining for validity alone, then
+      // for angles, costs a whole round more); the buffer asks for none beside its invalid
+      // quads. A stage on its way is not refined for angles: they are the finished buffer's.
+      std::vector<internal::Refinement_request> requests;
+      if(!valid)
+        requests = m_buffer_requests.for_validity;
+      if(last >= Stage::BUFFER2)
+        requests.insert(requests.end(), m_buffer_requests.for_angles.begin(), m_buffer_requests.for_angles.end());
+      // Buffer nodes of two loops met across a narrow gap (a node on another's edge, or
+      // nearly on another node): the buffer's own checks do not see them. One level finer
+      // there, as for a bad quad.
+      for(const internal::Point_2d& p : m_flawed)
+        requests.emplace_back(p, 0.0);
+      record_round(mesh, valid, requests.size(), round_start);
+      const std::size_t bad = m_buffer_report.bad_angle_quads;
+      if(valid && (bad == 0 || last < Stage::BUFFER2))
+        return mesh;
+      const std::size_t added = m_refinement_queue.add(*m_tree, requests);
+      bool improved = false;
+      if(m_rounds.refine_for_buffer(valid, bad, added, improved, [&] { return buffer_error(requests, true); })) {
+        if(improved)
+          best = save_round(std::move(mesh));
+        continue;
+      }
+      if(valid && m_rounds.is_best(bad))
+        return mesh; // angles outside [45, 135] stay; the quality report shows them
+      if(m_rounds.has_valid_round())
+        return restore_round(std::move(best));
+      // not the round budget
+      throw Meshing_error(buffer_error(requests, added < requests.size() || m_tree->depth() >= m_tree->max_depth()));
+    }
+  }
+
   // what run() returns and the accessors show of one round
   struct Round_state
   {

@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <exception>
 #include <istream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -55,9 +56,9 @@ struct Poly_section
 };
 
 /// Reads one segment line, `<index> <a> <b> [marker]`, with `markers` markers: its endpoints
-/// into `s`, 0-based.
+/// into `s`, 0-based, and its marker, if it has one, into `marker`.
 inline bool read_poly_segment(const Text_lines& r, const Vertex_list& v, long long markers, std::size_t header_line,
-                              std::array<std::size_t, 2>& s, std::string& msg)
+                              std::array<std::size_t, 2>& s, int& marker, std::string& msg)
 {
   const std::size_t nv = v.xy.size();
   const std::size_t base = v.base;
@@ -92,6 +93,12 @@ inline bool read_poly_segment(const Text_lines& r, const Vertex_list& v, long lo
     msg = r.here() + "expected an integer boundary marker of segment " + std::string(r[0]) + ", found " + quote(r[3]);
     return false;
   }
+  // the mesh's boundary edges carry it as an int, as Triangle does
+  if(m < (std::numeric_limits<int>::min)() || m > (std::numeric_limits<int>::max)()) {
+    msg = r.here() + "the boundary marker of segment " + std::string(r[0]) + " is out of range: " + std::string(r[3]);
+    return false;
+  }
+  marker = static_cast<int>(m);
   if(s[0] == s[1]) {
     msg = r.here() + "segment " + std::string(r[0]) + " has zero length: both ends are vertex " + std::to_string(s[0] + base);
     return false;
@@ -100,9 +107,9 @@ inline bool read_poly_segment(const Text_lines& r, const Vertex_list& v, long lo
 }
 
 /// Reads the segment section: `<#segments> [<#boundary markers (0|1)>]`, then
-/// `<index> <a> <b> [marker]`.
+/// `<index> <a> <b> [marker]`; `markers` gets one per segment if the header announces them.
 inline bool read_poly_segments(Text_lines& r, const Vertex_list& v, Poly_section<std::array<std::size_t, 2> >& segments,
-                               std::string& msg)
+                               std::vector<int>& markers, std::string& msg)
 {
   const std::size_t base = v.base;
   if(!r.next()) { msg = r.where(r.end_line()) + "unexpected end of file: the segment header is missing"; return false; }
@@ -124,8 +131,10 @@ inline bool read_poly_segments(Text_lines& r, const Vertex_list& v, Poly_section
     if(!next_indexed_line(r, i, ns, segments.base, "segment", "segments", "the segment header", seg_header_line, false, msg))
       return false;
     std::array<std::size_t, 2> s;
-    if(!read_poly_segment(r, v, nmark, seg_header_line, s, msg)) return false;
+    int marker = 0;
+    if(!read_poly_segment(r, v, nmark, seg_header_line, s, marker, msg)) return false;
     segs.push_back(s);
+    if(nmark == 1) markers.push_back(marker);
     seg_lines.push_back(r.line());
   }
   std::size_t d1 = 0, d2 = 0;
@@ -228,11 +237,13 @@ bool read_poly_text(Text_lines& r, const std::string& node_file, Domain_2<K>& ou
   long long count = 0;
   Poly_section<std::array<std::size_t, 2> > segments;
   Poly_section<std::array<double, 2> > holes;
-  if(!read_poly_vertices(r, node_file, v, count, msg) || !read_poly_segments(r, v, segments, msg) ||
+  std::vector<int> markers;
+  if(!read_poly_vertices(r, node_file, v, count, msg) || !read_poly_segments(r, v, segments, markers, msg) ||
      !read_poly_holes(r, holes, msg) || !read_poly_regions(r, msg))
     return false;
   append_points<K>(v.xy, out.points);
   out.segments = std::move(segments.items);
+  out.segment_markers = std::move(markers);
   append_points<K>(holes.items, out.holes);
   out.point_labels = file_labels(v.base, v.lines, count == 0 ? node_file : std::string());
   out.segment_labels = file_labels(segments.base, segments.lines);
@@ -275,6 +286,7 @@ inline std::string node_file_beside(const std::string& poly_file)
 /// endpoints use the same base; segment and hole numbers are consecutive from 0 or 1 too.
 /// A vertex or segment line holds exactly the attributes and marker its header announces:
 /// Triangle defaults missing ones to 0, here a short line is an error, as is an extra token.
+/// The segments' markers, if the header announces them, go to `Domain_2::segment_markers`.
 /// A `.poly` listing 0 vertices takes them from the `.node` file beside it, which only the
 /// file-name overload can do.
 ///

@@ -11,82 +11,171 @@
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <iomanip>
 #include <limits>
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace CGAL {
 namespace Quad_mesher_2 {
 namespace IO {
+namespace internal {
+
+using Quad_mesher_2::internal::Marker_group;
+
+/// The bounding box `xmin ymin 0 xmax ymax 0` of the points `index(0)`, ..., `index(n - 1)` of
+/// `mesh`, as an `$Entities` line gives it (zeros if `n` is 0).
+template <class Point_2, class Index>
+void write_msh_box(std::ostream& out, const Quad_mesh_2<Point_2>& mesh, std::size_t n, Index index)
+{
+  double xmin = 0, ymin = 0, xmax = 0, ymax = 0;
+  for(std::size_t i = 0; i < n; ++i) {
+    const Point_2& p = mesh.points[index(i)];
+    const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y());
+    xmin = i == 0 ? x : (std::min)(xmin, x);
+    xmax = i == 0 ? x : (std::max)(xmax, x);
+    ymin = i == 0 ? y : (std::min)(ymin, y);
+    ymax = i == 0 ? y : (std::max)(ymax, y);
+  }
+  out << xmin << ' ' << ymin << " 0 " << xmax << ' ' << ymax << " 0";
+}
+
+/// The physical tag of each marker group: the marker itself if every marker is positive (as
+/// Gmsh's own tags are, and solvers take them for boundary ids), else 1, 2, ... in order.
+inline std::vector<int> msh_physical_tags(const std::vector<Marker_group>& groups)
+{
+  const bool positive = groups.empty() || groups.front().marker > 0; // markers increase
+  std::vector<int> tags;
+  for(std::size_t g = 0; g < groups.size(); ++g)
+    tags.push_back(positive ? groups[g].marker : int(g + 1));
+  return tags;
+}
+
+/// `$PhysicalNames` (a group per marker, then the surface "domain") and `$Entities`: curve
+/// g + 1 holds marker group g, surface 1 the quads, bounded by the curves.
+template <class Point_2>
+void write_msh_entities(std::ostream& out, const Quad_mesh_2<Point_2>& mesh, const std::vector<Marker_group>& groups,
+                        const std::vector<int>& tags)
+{
+  if(!groups.empty()) {
+    out << "$PhysicalNames\n" << groups.size() + 1 << '\n';
+    for(std::size_t g = 0; g < groups.size(); ++g)
+      out << "1 " << tags[g] << " \"" << Quad_mesher_2::internal::marker_name(groups[g].marker) << "\"\n";
+    out << "2 1 \"domain\"\n$EndPhysicalNames\n";
+  }
+  // numPoints numCurves numSurfaces numVolumes; then each entity: tag, bounding box,
+  // numPhysicalTags and tags, numBoundingPoints or numBoundingCurves and tags.
+  out << "$Entities\n0 " << groups.size() << " 1 0\n";
+  for(std::size_t g = 0; g < groups.size(); ++g) {
+    const std::vector<std::size_t>& edges = groups[g].edges;
+    out << g + 1 << ' ';
+    write_msh_box(out, mesh, 2 * edges.size(), [&](std::size_t i) {
+      const auto& e = mesh.boundary_edges[edges[i / 2]];
+      return i % 2 == 0 ? e.v0 : e.v1;
+    });
+    out << " 1 " << tags[g] << " 0\n";
+  }
+  out << "1 ";
+  write_msh_box(out, mesh, mesh.points.size(), [](std::size_t i) { return i; });
+  if(groups.empty()) {
+    out << " 0 0\n";
+  } else {
+    out << " 1 1 " << groups.size();
+    for(std::size_t g = 0; g < groups.size(); ++g)
+      out << ' ' << g + 1;
+    out << '\n';
+  }
+  out << "$EndEntities\n";
+}
+
+/// `$Nodes`: one block on the surface, node tags 1..n in the order of `mesh.points`.
+template <class Point_2>
+void write_msh_nodes(std::ostream& out, const Quad_mesh_2<Point_2>& mesh)
+{
+  const std::size_t n = mesh.points.size();
+  out << "$Nodes\n";
+  if(n == 0) {
+    out << "0 0 0 0\n";
+  } else {
+    out << "1 " << n << " 1 " << n << '\n'; // numEntityBlocks numNodes minNodeTag maxNodeTag
+    out << "2 1 0 " << n << '\n';           // entityDim entityTag parametric numNodesInBlock
+    Quad_mesher_2::internal::Text_buffer text(out);
+    for(std::size_t i = 1; i <= n; ++i)
+      text << i << '\n';
+    for(const Point_2& p : mesh.points)
+      text << CGAL::to_double(p.x()) << ' ' << CGAL::to_double(p.y()) << " 0\n";
+    text.flush();
+  }
+  out << "$EndNodes\n";
+}
+
+/// `$Elements`: the quads first (tags 1..m, one block on the surface), then one block of
+/// lines per marker group on its curve (tags from m + 1).
+template <class Point_2>
+void write_msh_elements(std::ostream& out, const Quad_mesh_2<Point_2>& mesh, const std::vector<Marker_group>& groups)
+{
+  const std::size_t m = mesh.quads.size(), total = m + mesh.boundary_edges.size();
+  out << "$Elements\n";
+  if(total == 0) {
+    out << "0 0 0 0\n$EndElements\n";
+    return;
+  }
+  // numEntityBlocks numElements minTag maxTag; each block: entityDim entityTag elementType
+  // numElements
+  out << (m > 0 ? 1 : 0) + groups.size() << ' ' << total << " 1 " << total << '\n';
+  Quad_mesher_2::internal::Text_buffer text(out);
+  std::size_t tag = 1;
+  if(m > 0) {
+    text << "2 1 3 " << m << '\n';
+    for(const auto& q : mesh.quads)
+      text << tag++ << ' ' << q[0] + 1 << ' ' << q[1] + 1 << ' ' << q[2] + 1 << ' ' << q[3] + 1 << '\n';
+  }
+  for(std::size_t g = 0; g < groups.size(); ++g) {
+    text << "1 " << g + 1 << " 1 " << groups[g].edges.size() << '\n';
+    for(std::size_t i : groups[g].edges)
+      text << tag++ << ' ' << mesh.boundary_edges[i].v0 + 1 << ' ' << mesh.boundary_edges[i].v1 + 1 << '\n';
+  }
+  text.flush();
+  out << "$EndElements\n";
+}
+
+} // namespace internal
 
 /// \ingroup PkgQuadMesher2IO
-/// Writes `mesh` as a Gmsh MSH 4.1 ASCII file: `$MeshFormat` (4.1 0 8), `$Entities` with a
-/// single surface (tag 1) whose bounding box is that of the points, `$Nodes` (one block on
-/// that surface, node tags 1..n in the order of `mesh.points`, z = 0) and `$Elements` (one
-/// block of type 3, the 4-node quadrangle, element tags 1..m in the order of `mesh.quads`).
+/// Writes `mesh` as a Gmsh MSH 4.1 ASCII file: `$MeshFormat` (4.1 0 8), `$Entities`,
+/// `$Nodes` (one block on the surface, node tags 1..n in the order of `mesh.points`, z = 0)
+/// and `$Elements` (one block of type 3, the 4-node quadrangle, element tags 1..m in the
+/// order of `mesh.quads`).
+///
+/// Without `mesh.boundary_edges` the entities are a single surface (tag 1). With them, each
+/// boundary marker gets a curve entity (tags 1, 2, ... by increasing marker) holding its
+/// edges as a block of 2-node lines (type 1, tags after the quads') and a named physical
+/// group, `marker_3` for marker 3 (`marker_m3` for -3), and the surface the physical group
+/// `domain` (tag 1); `$PhysicalNames` lists them. A marker's physical tag is the marker
+/// itself if every marker is positive, else 1, 2, ... by increasing marker (Gmsh's tags are
+/// positive). Gmsh lists one physical group per marker; deal.II, for one, takes the physical
+/// tags for boundary ids.
+///
 /// Coordinates are converted with `CGAL::to_double`; the node coordinates are written as the
-/// shortest decimals that read back as the same doubles, the bounding box with `max_digits10`
-/// digits.
-/// Returns `false`, without throwing, if the stream fails or a quad index is out of range.
+/// shortest decimals that read back as the same doubles, the bounding boxes with
+/// `max_digits10` digits.
+/// Returns `false`, without throwing, if the stream fails or an index is out of range.
 /// The stream's precision and format flags are restored.
 template <class Point_2>
 bool write_MSH(std::ostream& os, const Quad_mesh_2<Point_2>& mesh)
 {
-  if(!Quad_mesher_2::internal::quad_indices_in_range(mesh))
+  if(!Quad_mesher_2::internal::mesh_indices_in_range(mesh))
     return false;
   return Quad_mesher_2::internal::guarded_write(os, [&](std::ostream& out) {
-    const std::size_t n = mesh.points.size(), m = mesh.quads.size();
+    const std::vector<internal::Marker_group> groups = Quad_mesher_2::internal::marker_groups(mesh);
     out << std::setprecision(std::numeric_limits<double>::max_digits10);
     out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
-
-    double xmin = 0, ymin = 0, xmax = 0, ymax = 0;
-    for(std::size_t i = 0; i < n; ++i) {
-      const double x = CGAL::to_double(mesh.points[i].x()), y = CGAL::to_double(mesh.points[i].y());
-      if(i == 0) {
-        xmin = xmax = x;
-        ymin = ymax = y;
-      } else {
-        xmin = (std::min)(xmin, x);
-        xmax = (std::max)(xmax, x);
-        ymin = (std::min)(ymin, y);
-        ymax = (std::max)(ymax, y);
-      }
-    }
-    // numPoints numCurves numSurfaces numVolumes; then the surface: tag, bounding box,
-    // numPhysicalTags, numBoundingCurves.
-    out << "$Entities\n0 0 1 0\n1 " << xmin << ' ' << ymin << " 0 " << xmax << ' ' << ymax
-        << " 0 0 0\n$EndEntities\n";
-
-    out << "$Nodes\n";
-    if(n == 0) {
-      out << "0 0 0 0\n";
-    } else {
-      out << "1 " << n << " 1 " << n << '\n'; // numEntityBlocks numNodes minNodeTag maxNodeTag
-      out << "2 1 0 " << n << '\n';           // entityDim entityTag parametric numNodesInBlock
-      Quad_mesher_2::internal::Text_buffer text(out);
-      for(std::size_t i = 1; i <= n; ++i)
-        text << i << '\n';
-      for(const Point_2& p : mesh.points)
-        text << CGAL::to_double(p.x()) << ' ' << CGAL::to_double(p.y()) << " 0\n";
-      text.flush();
-    }
-    out << "$EndNodes\n";
-
-    out << "$Elements\n";
-    if(m == 0) {
-      out << "0 0 0 0\n";
-    } else {
-      out << "1 " << m << " 1 " << m << '\n'; // numEntityBlocks numElements minTag maxTag
-      out << "2 1 3 " << m << '\n';           // entityDim entityTag elementType numElements
-      Quad_mesher_2::internal::Text_buffer text(out);
-      std::size_t tag = 1;
-      for(const auto& q : mesh.quads)
-        text << tag++ << ' ' << q[0] + 1 << ' ' << q[1] + 1 << ' ' << q[2] + 1 << ' ' << q[3] + 1 << '\n';
-      text.flush();
-    }
-    out << "$EndElements\n";
+    internal::write_msh_entities(out, mesh, groups, internal::msh_physical_tags(groups));
+    internal::write_msh_nodes(out, mesh);
+    internal::write_msh_elements(out, mesh, groups);
     return out.good();
   });
 }

@@ -13,8 +13,6 @@
 
 #include <array>
 #include <cstddef>
-#include <iomanip>
-#include <limits>
 #include <ostream>
 #include <string>
 
@@ -22,28 +20,99 @@ namespace CGAL {
 namespace Quad_mesher_2 {
 namespace IO {
 
+namespace internal {
+
+/// `<Cells>`: the quads (`VTK_QUAD`, 9), then the boundary edges (`VTK_LINE`, 3).
+template <class Point_2>
+void write_vtu_cells(std::ostream& out, const Quad_mesh_2<Point_2>& mesh)
+{
+  const std::size_t m = mesh.quads.size(), cells = m + mesh.boundary_edges.size();
+  Quad_mesher_2::internal::Text_buffer text(out);
+  out << "      <Cells>\n"
+         "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+  for(const auto& q : mesh.quads)
+    text << q[0] << ' ' << q[1] << ' ' << q[2] << ' ' << q[3] << '\n';
+  for(const auto& e : mesh.boundary_edges)
+    text << e.v0 << ' ' << e.v1 << '\n';
+  text.flush();
+  out << "        </DataArray>\n"
+         "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+  for(std::size_t i = 1; i <= cells; ++i)
+    text << (i <= m ? 4 * i : 4 * m + 2 * (i - m)) << (i % 16 == 0 || i == cells ? '\n' : ' ');
+  text.flush();
+  out << "        </DataArray>\n"
+         "        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+  for(std::size_t i = 1; i <= cells; ++i)
+    text << (i <= m ? 9 : 3) << (i % 32 == 0 || i == cells ? '\n' : ' ');
+  text.flush();
+  out << "        </DataArray>\n"
+         "      </Cells>\n";
+}
+
+/// `<CellData>`: the quads' quality fields, neutral values on the lines (1 and 0: a filter
+/// for bad quads never picks one), and every cell's `marker`, 0 on the quads.
+template <class Point_2>
+void write_vtu_cell_data(std::ostream& out, const Quad_mesh_2<Point_2>& mesh)
+{
+  const std::size_t lines = mesh.boundary_edges.size();
+  auto corners = [&](const std::array<std::size_t, 4>& q) {
+    std::array<Quad_mesher_2::internal::Point_2d, 4> g;
+    for(int k = 0; k < 4; ++k)
+      g[k] = Quad_mesher_2::internal::to_point_2d(mesh.points[q[k]]);
+    return g;
+  };
+  // 6 significant digits are plenty for colouring
+  Quad_mesher_2::internal::Text_buffer text(out, 6);
+  out << "      <CellData Scalars=\"max_angle_deviation\">\n"
+         "        <DataArray type=\"Float64\" Name=\"scaled_jacobian\" format=\"ascii\">\n";
+  for(const auto& q : mesh.quads)
+    text << Quad_mesher_2::internal::quad_scaled_jacobian(corners(q)) << '\n';
+  for(std::size_t i = 0; i < lines; ++i)
+    text << "1\n";
+  text.flush();
+  out << "        </DataArray>\n"
+         "        <DataArray type=\"Float64\" Name=\"max_angle_deviation\" format=\"ascii\">\n";
+  for(const auto& q : mesh.quads)
+    text << Quad_mesher_2::internal::quad_max_angle_deviation(corners(q)) << '\n';
+  for(std::size_t i = 0; i < lines; ++i)
+    text << "0\n";
+  text.flush();
+  out << "        </DataArray>\n"
+         "        <DataArray type=\"Int32\" Name=\"marker\" format=\"ascii\">\n";
+  for(std::size_t i = 0; i < mesh.quads.size(); ++i)
+    text << "0\n";
+  for(const auto& e : mesh.boundary_edges)
+    text << e.marker << '\n';
+  text.flush();
+  out << "        </DataArray>\n"
+         "      </CellData>\n";
+}
+
+} // namespace internal
+
 /// \ingroup PkgQuadMesher2IO
 /// Writes `mesh` as a VTK XML unstructured grid (`.vtu`, ASCII), readable by ParaView: the
-/// points (z = 0, `Float64`, the shortest decimals that read back as the same doubles), the
-/// quads as cells of type `VTK_QUAD` (9) with `Int64` connectivity and offsets, and two cell
-/// fields for colouring:
+/// points (z = 0, `Float64`, the shortest decimals that read back as the same doubles); the
+/// cells, with `Int64` connectivity and offsets: the quads first, as `VTK_QUAD` (9) in the
+/// order of `mesh.quads`, so that cell i is quad i as before lines were written, then
+/// `mesh.boundary_edges` as `VTK_LINE` (3); and three cell fields:
 /// `scaled_jacobian` (minimum over the corners) and `max_angle_deviation` (largest
-/// |angle - 90| over the corners, in degrees), both computed in double.
-/// Returns `false`, without throwing, if the stream fails or a quad index is out of range.
+/// |angle - 90| over the corners, in degrees), both computed in double, for colouring (1 and
+/// 0 on the lines), and `marker`, `Int32`, the boundary marker of each line (0 on the quads).
+/// Returns `false`, without throwing, if the stream fails or an index is out of range.
 /// The stream's precision and format flags are restored.
 template <class Point_2>
 bool write_VTU(std::ostream& os, const Quad_mesh_2<Point_2>& mesh)
 {
-  if(!Quad_mesher_2::internal::quad_indices_in_range(mesh))
+  if(!Quad_mesher_2::internal::mesh_indices_in_range(mesh))
     return false;
   return Quad_mesher_2::internal::guarded_write(os, [&](std::ostream& out) {
-    const std::size_t n = mesh.points.size(), m = mesh.quads.size();
-    out << std::setprecision(std::numeric_limits<double>::max_digits10);
     out << "<?xml version=\"1.0\"?>\n"
            "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
            "header_type=\"UInt64\">\n"
            "  <UnstructuredGrid>\n"
-        << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfCells=\"" << m << "\">\n";
+        << "    <Piece NumberOfPoints=\"" << mesh.points.size() << "\" NumberOfCells=\""
+        << mesh.quads.size() + mesh.boundary_edges.size() << "\">\n";
 
     out << "      <Points>\n"
            "        <DataArray type=\"Float64\" Name=\"Points\" NumberOfComponents=\"3\" format=\"ascii\">\n";
@@ -53,42 +122,8 @@ bool write_VTU(std::ostream& os, const Quad_mesh_2<Point_2>& mesh)
     text.flush();
     out << "        </DataArray>\n"
            "      </Points>\n";
-
-    out << "      <Cells>\n"
-           "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-    for(const auto& q : mesh.quads)
-      text << q[0] << ' ' << q[1] << ' ' << q[2] << ' ' << q[3] << '\n';
-    text.flush();
-    out << "        </DataArray>\n"
-           "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-    for(std::size_t i = 1; i <= m; ++i)
-      out << 4 * i << (i % 16 == 0 || i == m ? '\n' : ' ');
-    out << "        </DataArray>\n"
-           "        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-    for(std::size_t i = 1; i <= m; ++i)
-      out << 9 << (i % 32 == 0 || i == m ? '\n' : ' ');
-    out << "        </DataArray>\n"
-           "      </Cells>\n";
-
-    // Cell quality fields; 6 significant digits are plenty for colouring.
-    out << std::setprecision(6);
-    out << "      <CellData Scalars=\"max_angle_deviation\">\n"
-           "        <DataArray type=\"Float64\" Name=\"scaled_jacobian\" format=\"ascii\">\n";
-    auto corners = [&](const std::array<std::size_t, 4>& q) {
-      std::array<Quad_mesher_2::internal::Point_2d, 4> g;
-      for(int k = 0; k < 4; ++k)
-        g[k] = Quad_mesher_2::internal::to_point_2d(mesh.points[q[k]]);
-      return g;
-    };
-    for(const auto& q : mesh.quads)
-      out << Quad_mesher_2::internal::quad_scaled_jacobian(corners(q)) << '\n';
-    out << "        </DataArray>\n"
-           "        <DataArray type=\"Float64\" Name=\"max_angle_deviation\" format=\"ascii\">\n";
-    for(const auto& q : mesh.quads)
-      out << Quad_mesher_2::internal::quad_max_angle_deviation(corners(q)) << '\n';
-    out << "        </DataArray>\n"
-           "      </CellData>\n";
-
+    internal::write_vtu_cells(out, mesh);
+    internal::write_vtu_cell_data(out, mesh);
     out << "    </Piece>\n"
            "  </UnstructuredGrid>\n"
            "</VTKFile>\n";

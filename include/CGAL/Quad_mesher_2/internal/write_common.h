@@ -2,14 +2,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): Quad_mesher_2 developers
 //
-// Plumbing shared by the mesh writers of `IO/`: index checks, stream-state saving and the
-// filename-to-stream wrapper. Nothing here throws.
+// Plumbing shared by the mesh writers of `IO/`: index checks, the boundary edges grouped by
+// marker, stream-state saving and the filename-to-stream wrapper. Nothing here throws but
+// `std::bad_alloc`, which the writers catch (guarded_write()).
 
 #ifndef CGAL_QUAD_MESHER_2_INTERNAL_WRITE_COMMON_H
 #define CGAL_QUAD_MESHER_2_INTERNAL_WRITE_COMMON_H
 
 #include <CGAL/Quad_mesher_2/Quad_mesh_2.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cstddef>
 #include <fstream>
@@ -17,6 +19,7 @@
 #include <ostream>
 #include <string>
 #include <type_traits>
+#include <vector>
 
 namespace CGAL {
 namespace Quad_mesher_2 {
@@ -32,6 +35,53 @@ bool quad_indices_in_range(const Quad_mesh_2<Point_2>& mesh)
       if(v >= n)
         return false;
   return true;
+}
+
+/// `true` if every quad and boundary-edge index refers to an entry of `mesh.points` (the check
+/// of the writers that write the boundary edges).
+template <class Point_2>
+bool mesh_indices_in_range(const Quad_mesh_2<Point_2>& mesh)
+{
+  const std::size_t n = mesh.points.size();
+  for(const auto& e : mesh.boundary_edges)
+    if(e.v0 >= n || e.v1 >= n)
+      return false;
+  return quad_indices_in_range(mesh);
+}
+
+/// The boundary edges of one marker: indices into `Quad_mesh_2::boundary_edges`, in order.
+struct Marker_group
+{
+  int marker;
+  std::vector<std::size_t> edges;
+};
+
+/// The boundary edges of `mesh` grouped by marker, markers increasing: every writer lists the
+/// markers in this order.
+template <class Point_2>
+std::vector<Marker_group> marker_groups(const Quad_mesh_2<Point_2>& mesh)
+{
+  std::vector<std::size_t> order(mesh.boundary_edges.size());
+  for(std::size_t i = 0; i < order.size(); ++i)
+    order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return mesh.boundary_edges[a].marker < mesh.boundary_edges[b].marker;
+  });
+  std::vector<Marker_group> groups;
+  for(std::size_t i : order) {
+    const int marker = mesh.boundary_edges[i].marker;
+    if(groups.empty() || groups.back().marker != marker)
+      groups.push_back({ marker, {} });
+    groups.back().edges.push_back(i);
+  }
+  return groups;
+}
+
+/// The name the writers give marker `m`'s group: `marker_3`, or `marker_m3` for -3 (a minus
+/// sign is not allowed in Abaqus names).
+inline std::string marker_name(int m)
+{
+  return m < 0 ? "marker_m" + std::to_string(-static_cast<long long>(m)) : "marker_" + std::to_string(m);
 }
 
 /// Buffered text for the writers' long blocks of numbers: numbers are formatted with
