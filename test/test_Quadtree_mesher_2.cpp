@@ -265,6 +265,26 @@ TEST(Quadtree_mesher_2, copies_into_a_surface_mesh)
   EXPECT_TRUE(sm.is_valid(false));
 }
 
+// CGAL's usual surface mesh is one of Point_3: the mesh goes in at z = 0.
+TEST(Quadtree_mesher_2, copies_into_a_surface_mesh_of_3d_points)
+{
+  Domain d = random_domain(40, 9);
+  auto mesh = QM::make_quad_mesh_2(d);
+  CGAL::Surface_mesh<K::Point_3> sm;
+  ASSERT_TRUE(QM::copy_to_face_graph(mesh, sm));
+  EXPECT_EQ(num_faces(sm), mesh.quads.size());
+  EXPECT_TRUE(CGAL::is_quad_mesh(sm));
+  EXPECT_TRUE(sm.is_valid(false));
+  std::size_t i = 0;
+  for(auto v : vertices(sm)) {
+    const K::Point_3& p = sm.point(v);
+    EXPECT_EQ(p.x(), mesh.points[i].x());
+    EXPECT_EQ(p.y(), mesh.points[i].y());
+    EXPECT_EQ(p.z(), 0);
+    ++i;
+  }
+}
+
 // The one-call function meshes a domain through every stage, as the tool does by default (it
 // stopped after the points stage and returned the bounding grid, of area 64 here).
 TEST(Quadtree_mesher_2, make_quad_mesh_2_meshes_a_domain_up_to_its_boundary)

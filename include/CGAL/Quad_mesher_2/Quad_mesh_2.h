@@ -8,9 +8,12 @@
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/properties.h>
+#include <CGAL/Dimension.h>
+#include <CGAL/Kernel_traits.h>
 
 #include <array>
 #include <cstddef>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -51,20 +54,42 @@ struct Quad_mesh_2
   void clear() { points.clear(); quads.clear(); boundary_edges.clear(); }
 };
 
+namespace internal {
+
+// `p` as a point of a face graph: itself where the graph's point type is constructible from
+// it, else the 3D point (x, y, 0) (a surface mesh of `Point_3`, the usual one in CGAL)
+template <class Graph_point, class Point_2>
+Graph_point face_graph_point(const Point_2& p)
+{
+  if constexpr(std::is_constructible_v<Graph_point, const Point_2&>) {
+    return Graph_point(p);
+  } else {
+    static_assert(Ambient_dimension<Graph_point>::value == 3,
+                  "copy_to_face_graph: the graph's points must be made from a Point_2 or be 3D");
+    typedef typename Kernel_traits<Graph_point>::Kernel::FT FT;
+    return Graph_point(FT(p.x()), FT(p.y()), FT(0));
+  }
+}
+
+} // namespace internal
+
 /// \ingroup PkgQuadMesher2Ref
 /// Appends `mesh` to `graph`, a model of `MutableFaceGraph` whose vertex point type is
-/// constructible from `Point_2`. Returns `false` (leaving `graph` partly filled) if a face
-/// could not be added, which happens only for a non-manifold input.
+/// constructible from `Point_2`, or is a 3D point whose coordinates' type is constructible
+/// from those of `Point_2` (then the mesh lies in the plane z = 0). Returns `false` (leaving
+/// `graph` partly filled) if a face could not be added, which happens only for a non-manifold
+/// input.
 template <class Point_2, class FaceGraph>
 bool copy_to_face_graph(const Quad_mesh_2<Point_2>& mesh, FaceGraph& graph)
 {
   typedef typename boost::graph_traits<FaceGraph>::vertex_descriptor vertex_descriptor;
   auto vpm = get(CGAL::vertex_point, graph);
+  typedef typename boost::property_traits<decltype(vpm)>::value_type Graph_point;
   std::vector<vertex_descriptor> vertices;
   vertices.reserve(mesh.points.size());
   for(const Point_2& p : mesh.points) {
     vertex_descriptor v = add_vertex(graph);
-    put(vpm, v, p);
+    put(vpm, v, internal::face_graph_point<Graph_point>(p));
     vertices.push_back(v);
   }
   std::array<vertex_descriptor, 4> face;
