@@ -20,14 +20,19 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <regex>
 #include <sstream>
 #include <string>
+#include <thread>
+#include <utility>
 #include <vector>
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace qm2_test_io_read {
@@ -416,6 +421,87 @@ TEST(IO_read, MissingFile)
   }
 }
 
+// Only regular files are opened: opening a FIFO with no writer blocked for ever, and
+// /dev/zero read as an "empty file". A symbolic link counts as the file it names.
+TEST(IO_read, NonRegularFilesAreRefusedBeforeOpening)
+{
+  using namespace qm2_test_io_read;
+  const std::string fifo = (scratch_dir() / "fifo.poly").string();
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  // Should a reader open the FIFO again, this writer lets the open return (with an empty
+  // file): the test then fails instead of hanging.
+  std::thread([fifo] {
+    std::this_thread::sleep_for(std::chrono::seconds(10));
+    const int fd = ::open(fifo.c_str(), O_WRONLY | O_NONBLOCK);
+    if(fd >= 0) ::close(fd);
+  }).detach();
+  Domain d;
+  std::string err;
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_FALSE(QIO::read_poly(fifo, d, &err));
+  EXPECT_EQ(err, fifo + ": is not a regular file (a FIFO)");
+  EXPECT_FALSE(QIO::read_domain(fifo, d, &err));
+  EXPECT_EQ(err, fifo + ": is not a regular file (a FIFO)");
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+
+  const std::string zero = (scratch_dir() / "zero.xy").string();
+  fs::create_symlink("/dev/zero", zero);
+  for(const std::string& f : { std::string("/dev/zero"), zero }) {
+    d.points.push_back(Point_2(1, 1));
+    EXPECT_FALSE(QIO::read_domain(f, d, &err));
+    EXPECT_TRUE(is_empty(d));
+    EXPECT_EQ(err, f + ": is not a regular file (a character device)");
+  }
+  EXPECT_FALSE(QIO::read_xy(zero, d, &err));
+  EXPECT_EQ(err, zero + ": is not a regular file (a character device)");
+  const std::string dir = (scratch_dir() / "dir.wkt").string();
+  fs::create_directories(dir);
+  EXPECT_FALSE(QIO::read_domain(dir, d, &err));
+  EXPECT_EQ(err, dir + ": is a directory, not a file");
+}
+
+// A UTF-8 byte order mark is skipped and CR (old Mac), CRLF and LF line ends all end lines,
+// in every format: each file gives the domain its LF twin gives, and errors name the line an
+// editor shows.
+TEST(IO_read, ByteOrderMarkAndEveryLineEnd)
+{
+  using namespace qm2_test_io_read;
+  const std::pair<const char*, std::string> formats[] = {
+    { ".poly", square_with_hole_poly(1) },
+    { ".node", "# comment\n3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n" },
+    { ".xy", "0 0\n1 0 # comment\n\n0 1\n" },
+    { ".wkt", "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0),\n(1 1, 1 3, 3 3, 3 1, 1 1))\n" } };
+  auto with_line_ends = [](std::string text, const char* end) {
+    for(std::size_t i = text.find('\n'); i != std::string::npos; i = text.find('\n', i + std::strlen(end)))
+      text.replace(i, 1, end);
+    return text;
+  };
+  for(const auto& [ext, text] : formats) {
+    Domain lf;
+    std::string err;
+    ASSERT_TRUE(QIO::read_domain(write_file(std::string("lf") + ext, text), lf, &err)) << err;
+    for(const char* end : { "\r", "\r\n", "\n" })
+      for(const char* bom : { "", "\xEF\xBB\xBF" }) {
+        SCOPED_TRACE(std::string(ext) + " " + QIO::internal::quote(std::string(bom) + end));
+        const std::string content = bom + with_line_ends(text, end);
+        Domain d;
+        ASSERT_TRUE(QIO::read_domain(write_file(std::string("ends") + ext, content), d, &err)) << err;
+        EXPECT_EQ(d.points, lf.points);
+        EXPECT_EQ(d.segments, lf.segments);
+        EXPECT_EQ(d.holes, lf.holes);
+        if(ext == std::string(".xy")) { // the stream overloads too
+          std::istringstream in(content);
+          ASSERT_TRUE(QIO::read_xy(in, d, &err)) << err;
+          EXPECT_EQ(d.points, lf.points);
+        }
+        // the third line's error names line 3
+        const std::string bad = write_file(std::string("ends_bad") + ext, bom + with_line_ends("\n\nbad\n", end));
+        EXPECT_FALSE(QIO::read_domain(bad, d, &err));
+        EXPECT_EQ(err.rfind(bad + ":3: ", 0), 0u) << err;
+      }
+  }
+}
+
 TEST(IO_read, DuplicatePointsFoundQuicklyAmongMany)
 {
   using namespace qm2_test_io_read;
@@ -569,7 +655,7 @@ TEST(IO_read, WktPolygonInsideAnotherIsAnError)
 {
   using namespace qm2_test_io_read;
   for(const std::string& wkt : { std::string("MULTIPOLYGON (((0 0, 4 0, 4 4, 0 4, 0 0)), ((1 1, 2 1, 2 2, 1 2, 1 1)))"),
-                                std::string("POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0))\nPOLYGON ((0 0, 2 0, 2 2, 0 2, 0 0))") }) {
+                                std::string("GEOMETRYCOLLECTION (POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0)),\nPOLYGON ((0 0, 2 0, 2 2, 0 2, 0 0)))") }) {
     Domain d;
     std::string err;
     std::istringstream in(wkt);
@@ -610,7 +696,7 @@ TEST(IO_read, WktManyHolesAndTouchingRings)
 TEST(IO_read, WktPointCloud)
 {
   using namespace qm2_test_io_read;
-  std::istringstream in("MULTIPOINT ((0 0), (1 0), 2 2)\nPOINT (3 3)\nPOINT EMPTY\n");
+  std::istringstream in("GEOMETRYCOLLECTION (MULTIPOINT ((0 0), (1 0), 2 2),\nPOINT (3 3),\nPOINT EMPTY)\n");
   Domain d;
   std::string err;
   ASSERT_TRUE(QIO::read_WKT(in, d, &err)) << err;
@@ -661,8 +747,8 @@ TEST(IO_read, LaterErrorsUseTheFilesNumbersAndLines)
       << msg;
 
   // rings of two polygons that cross (the reader leaves crossings to the domain's checks)
-  const std::string wkt = write_file("bowtie1.wkt", "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0),\n(2 2, 8 2, 8 8, 2 8, 2 2))\n"
-                                                    "POLYGON ((12 1, 12 12, 1 12, 1 1, 12 1))");
+  const std::string wkt = write_file("bowtie1.wkt", "MULTIPOLYGON (((0 0, 10 0, 10 10, 0 10, 0 0),\n(2 2, 8 2, 8 8, 2 8, 2 2)),\n"
+                                                    "((12 1, 12 12, 1 12, 1 1, 12 1)))");
   ASSERT_TRUE(QIO::read_WKT(wkt, d, &err)) << err;
   msg = loop_error(d);
   EXPECT_NE(msg.find("of the outer ring of polygon 2 (line 3)"), std::string::npos) << msg;
@@ -688,8 +774,15 @@ TEST(IO_read, WktMalformedCases)
     {"w_collinear", "POLYGON ((0 0, 1 0, 2 0, 0 0))", 1, "not simple"},
     {"w_repeated_vertex", "POLYGON ((0 0, 4 0, 2 2, 4 4, 0 4, 2 2, 0 0))", 1, "duplicate point"},
     {"w_zero_length_edge", "POLYGON ((0 0, 1 0, 1 0, 0 1, 0 0))", 1, "zero-length"},
-    {"w_duplicate_points", "MULTIPOINT (0 0, 1 1)\nPOINT (1 1)", 2, "duplicate point"},
-    {"w_point_on_ring_vertex", "POLYGON ((0 0, 1 0, 0 1, 0 0))\nPOINT (1 0)", 2, "already a ring vertex"},
+    {"w_duplicate_points", "GEOMETRYCOLLECTION (MULTIPOINT (0 0, 1 1),\nPOINT (1 1))", 2, "duplicate point"},
+    {"w_point_on_ring_vertex", "GEOMETRYCOLLECTION (POLYGON ((0 0, 1 0, 0 1, 0 0)),\nPOINT (1 0))", 2, "already a ring vertex"},
+    // one geometry a file: a second one, even of the same type, is most likely a mistake
+    {"w_two_polygons", "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0))\n\nPOLYGON ((5 0, 6 0, 6 1, 5 0))", 3,
+     "a second WKT geometry (POLYGON): a file holds one; put several polygons in one MULTIPOLYGON"},
+    {"w_point_after_polygon", "SRID=4326;POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0));\nPOINT (9 9)", 2, "a second WKT geometry (POINT)"},
+    {"w_nested_collection", "GEOMETRYCOLLECTION (POINT (0 0),\nGEOMETRYCOLLECTION (POINT (1 1)))", 2,
+     "a GEOMETRYCOLLECTION inside a GEOMETRYCOLLECTION"},
+    {"w_collection_member", "GEOMETRYCOLLECTION (POINT (0 0), (1 1))", 1, "expected a WKT geometry keyword in GEOMETRYCOLLECTION"},
     {"w_shared_edge", "MULTIPOLYGON (((0 0, 1 0, 1 1, 0 1, 0 0)),\n((1 0, 2 0, 2 1, 1 1, 1 0)))", 2, "duplicate segment"},
     {"w_garbage_after", "POINT (1 1) )", 1, "expected a WKT geometry keyword"},
   };

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include <charconv>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -17,7 +18,12 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <thread>
+
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #ifdef QM2_CLI_PATH
 
@@ -225,6 +231,40 @@ TEST(quad_mesher_cli, cell_budget_stops_huge_meshes_cleanly)
   Cli_run r = run(lake + " -o " + scratch("big.msh").string() + " --stop-after quadtree --max-size 1e-5 --max-cells 100000");
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("cell budget of 100000"), std::string::npos) << r.err;
+  // within the largest budget, 1.7e11 cells of side 1e-6 (terabytes) ended in a bare "out of
+  // memory": the room for them is taken before any cell is made, and its failure named
+  r = run(lake + " -o " + scratch("big.msh").string() + " --stop-after quadtree --max-size 1e-6 --max-cells 1099511627776");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("more than memory holds, though within the cell budget of 1099511627776"), std::string::npos) << r.err;
+  // a point cloud grew its tree until memory ran out (3.6 GB in 16 s under a 4 GB limit)
+  const auto cloud = scratch("budget_cloud.xy");
+  std::ofstream(cloud) << "0 0\n1 0\n1 1\n0 1\n";
+  r = run(cloud.string() + " -o " + scratch("big.msh").string() + " --stop-after quadtree --max-size 1e-5 --max-cells 1099511627776");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("more than memory holds, though within the cell budget of 1099511627776"), std::string::npos) << r.err;
+}
+
+// Only regular files are read: a FIFO without a writer blocked the tool for ever.
+TEST(quad_mesher_cli, a_fifo_or_a_device_is_refused_at_once)
+{
+  const auto fifo = scratch("input_fifo.poly"), m = scratch("fifo.msh");
+  std::filesystem::remove(fifo);
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  // should the tool open it again, this writer lets it go on (to an "empty file" error): the
+  // test then fails instead of hanging
+  std::thread([fifo] {
+    std::this_thread::sleep_for(std::chrono::seconds(10));
+    const int fd = ::open(fifo.c_str(), O_WRONLY | O_NONBLOCK);
+    if(fd >= 0) ::close(fd);
+  }).detach();
+  const auto start = std::chrono::steady_clock::now();
+  Cli_run r = run(fifo.string() + " -o " + m.string());
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find(fifo.string() + ": is not a regular file (a FIFO)"), std::string::npos) << r.err;
+  r = run("/dev/zero -o " + m.string());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("/dev/zero: is not a regular file (a character device)"), std::string::npos) << r.err;
 }
 
 TEST(quad_mesher_cli, usage_errors)

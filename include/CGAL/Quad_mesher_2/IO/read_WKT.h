@@ -63,14 +63,15 @@ public:
       w += static_cast<char>(std::toupper(static_cast<unsigned char>(m_s[m_pos++])));
     return w;
   }
-  /// The next token up to a blank, a comma or a parenthesis.
+  /// The next token up to a blank, a comma, a parenthesis or a semicolon (which ends the
+  /// EWKT prefix `SRID=4326;`).
   std::string_view token()
   {
     skip_space();
     const std::size_t b = m_pos;
     while(m_pos < m_s.size()) {
       const char c = m_s[m_pos];
-      if(c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v' || c == ',' || c == '(' || c == ')') break;
+      if(c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v' || c == ',' || c == '(' || c == ')' || c == ';') break;
       ++m_pos;
     }
     if(m_pos == b && m_pos < m_s.size()) ++m_pos;  // a single punctuation character
@@ -124,39 +125,30 @@ class Wkt_parser
 public:
   Wkt_parser(Wkt_lexer& lex, Wkt_data& data, std::string& msg) : m_lex(lex), m_data(data), m_msg(msg) {}
 
+  /// One geometry, after an optional EWKT `SRID=...;` prefix: several polygons go in one
+  /// MULTIPOLYGON and mixed ones in one GEOMETRYCOLLECTION, so that a second one, most likely
+  /// a file joined to another by mistake, is not meshed silently.
   bool parse()
   {
-    std::size_t geometries = 0;
+    bool found = false;
     while(!m_lex.at_end()) {
       if(m_lex.accept(';')) continue;
       const std::size_t line = m_lex.line();
       const std::string kw = m_lex.word();
-      if(kw.empty()) return fail("expected a WKT geometry keyword (POLYGON, MULTIPOLYGON, POINT, MULTIPOINT), found " + m_lex.found());
+      if(kw.empty()) return fail("expected a WKT geometry keyword (POLYGON, MULTIPOLYGON, POINT, MULTIPOINT, GEOMETRYCOLLECTION), found " + m_lex.found());
       if(kw == "SRID") {  // EWKT prefix `SRID=4326;`
         if(!m_lex.accept('=')) return fail("expected '=' after SRID, found " + m_lex.found());
         m_lex.token();
         if(!m_lex.accept(';')) return fail("expected ';' after the SRID, found " + m_lex.found());
         continue;
       }
-      if(kw != "POLYGON" && kw != "MULTIPOLYGON" && kw != "POINT" && kw != "MULTIPOINT")
-        return fail_at(line, "unsupported WKT geometry type " + quote(kw) + " (expected POLYGON, MULTIPOLYGON, POINT or MULTIPOINT)");
-      if(std::isalpha(static_cast<unsigned char>(m_lex.peek()))) {
-        const std::size_t l2 = m_lex.line();
-        const std::string tag = m_lex.word();
-        if(tag == "EMPTY") { ++geometries; continue; }
-        if(tag == "Z" || tag == "M" || tag == "ZM")
-          return fail_at(l2, kw + " " + tag + ": only 2D WKT is supported");
-        return fail_at(l2, "expected '(' or EMPTY after " + kw + ", found " + quote(tag));
-      }
-      bool ok = true;
-      if(kw == "POINT") ok = point_body();
-      else if(kw == "MULTIPOINT") ok = multipoint_body();
-      else if(kw == "POLYGON") ok = polygon_body();
-      else ok = multipolygon_body();
-      if(!ok) return false;
-      ++geometries;
+      if(found)
+        return fail_at(line, "a second WKT geometry (" + kw + "): a file holds one; put several polygons in one "
+                             "MULTIPOLYGON, or mixed geometries in one GEOMETRYCOLLECTION");
+      if(!geometry(kw, line, true)) return false;
+      found = true;
     }
-    if(geometries == 0) return fail("no WKT geometry found (empty file)");
+    if(!found) return fail("no WKT geometry found (empty file)");
     if(m_data.rings.empty() && m_data.points.empty()) return fail("all WKT geometries are EMPTY: no points");
     return true;
   }
@@ -203,6 +195,43 @@ private:
       return fail("expected ',' or ')' after the coordinates, found " + m_lex.found());
     }
     return true;
+  }
+
+  /// The geometry whose keyword `kw` was read on `line`. A collection may not nest: its
+  /// members are the four other types.
+  bool geometry(const std::string& kw, std::size_t line, bool top_level)
+  {
+    const bool collection = kw == "GEOMETRYCOLLECTION";
+    if(collection && !top_level)
+      return fail_at(line, "a GEOMETRYCOLLECTION inside a GEOMETRYCOLLECTION is not supported");
+    if(!collection && kw != "POLYGON" && kw != "MULTIPOLYGON" && kw != "POINT" && kw != "MULTIPOINT")
+      return fail_at(line, "unsupported WKT geometry type " + quote(kw) +
+                           " (expected POLYGON, MULTIPOLYGON, POINT, MULTIPOINT or GEOMETRYCOLLECTION)");
+    if(std::isalpha(static_cast<unsigned char>(m_lex.peek()))) {
+      const std::size_t l2 = m_lex.line();
+      const std::string tag = m_lex.word();
+      if(tag == "EMPTY") return true;
+      if(tag == "Z" || tag == "M" || tag == "ZM")
+        return fail_at(l2, kw + " " + tag + ": only 2D WKT is supported");
+      return fail_at(l2, "expected '(' or EMPTY after " + kw + ", found " + quote(tag));
+    }
+    if(collection) return collection_body();
+    if(kw == "POINT") return point_body();
+    if(kw == "MULTIPOINT") return multipoint_body();
+    if(kw == "POLYGON") return polygon_body();
+    return multipolygon_body();
+  }
+
+  bool collection_body()
+  {
+    if(!expect('(', "after GEOMETRYCOLLECTION")) return false;
+    do {
+      const std::size_t line = m_lex.line();
+      const std::string kw = m_lex.word();
+      if(kw.empty()) return fail("expected a WKT geometry keyword in GEOMETRYCOLLECTION, found " + m_lex.found());
+      if(!geometry(kw, line, false)) return false;
+    } while(m_lex.accept(','));
+    return expect(')', "or ',' in GEOMETRYCOLLECTION");
   }
 
   bool point_body()
@@ -625,9 +654,10 @@ bool read_WKT_impl(std::string&& text, const std::string& source, Domain_2<K>& o
 } // namespace internal
 
 /// \ingroup PkgQuadMesher2IO
-/// Reads WKT geometries into `out` (replacing its content): any sequence of `POLYGON`,
-/// `MULTIPOLYGON`, `POINT` and `MULTIPOINT` (keywords case-insensitive, `EMPTY` allowed, an
-/// EWKT `SRID=...;` prefix skipped). Only 2D coordinates are accepted (`Z`/`M` are errors).
+/// Reads one WKT geometry into `out` (replacing its content): a `POLYGON`, `MULTIPOLYGON`,
+/// `POINT`, `MULTIPOINT`, or a `GEOMETRYCOLLECTION` of these (keywords case-insensitive,
+/// `EMPTY` allowed, an EWKT `SRID=...;` prefix skipped). A second geometry after the first is
+/// an error naming its line: several polygons go in one `MULTIPOLYGON`. Only 2D coordinates are accepted (`Z`/`M` are errors).
 ///
 /// Each ring becomes a closed chain of segments; it must end at its first point, as WKT
 /// asks (an open ring is an error, not closed silently). Each ring must have at least 3 distinct vertices, no repeated vertex and be

@@ -101,7 +101,8 @@ inline bool parse_integer(std::string_view tok, long long& v)
 
 /// A whole text file in memory, read line by line. `#` starts a comment that runs to the end
 /// of the line; blank and comment-only lines are skipped; tokens are separated by blanks,
-/// tabs or carriage returns.
+/// tabs or carriage returns (the `\r` of CRLF line ends; `normalise_text()` has made every
+/// other one a line feed).
 class Text_lines
 {
 public:
@@ -193,6 +194,18 @@ bool guarded_read(const std::string& source, Domain_2<K>& out, std::string* erro
   return false;
 }
 
+/// Drops a UTF-8 byte order mark, which editors on Windows put before the first line, and
+/// turns each carriage return that does not start a CRLF (old Mac line ends) into a line feed:
+/// the readers then see one kind of line end, and count lines as the user's editor does.
+inline void normalise_text(std::string& text)
+{
+  if(text.compare(0, 3, "\xEF\xBB\xBF") == 0)
+    text.erase(0, 3);
+  for(std::size_t i = text.find('\r'); i != std::string::npos; i = text.find('\r', i + 1))
+    if(i + 1 == text.size() || text[i + 1] != '\n')
+      text[i] = '\n';
+}
+
 /// Reads a whole stream into memory. False (and a message) on a stream error.
 inline bool slurp(std::istream& in, std::string& text, const std::string& source, std::string& msg)
 {
@@ -202,18 +215,43 @@ inline bool slurp(std::istream& in, std::string& text, const std::string& source
   ss << in.rdbuf();
   if(in.bad()) { msg = source + ": read error"; return false; }
   text = std::move(ss).str();
+  normalise_text(text);
   return true;
+}
+
+inline std::string file_type_name(std::filesystem::file_type type)
+{
+  switch(type) {
+  case std::filesystem::file_type::fifo: return "a FIFO";
+  case std::filesystem::file_type::character: return "a character device";
+  case std::filesystem::file_type::block: return "a block device";
+  case std::filesystem::file_type::socket: return "a socket";
+  default: return "a special file";
+  }
+}
+
+/// False, with a message naming `filename` and what it is, if it exists and is not a regular
+/// file (or a link to one): opening a FIFO without a writer blocks for ever, and a device such
+/// as /dev/zero reads as an empty or endless file. A missing file passes: opening it then
+/// gives the system's reason.
+inline bool is_regular_or_missing(const std::string& filename, std::string& msg)
+{
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_type type = fs::status(filename, ec).type();
+  if(type == fs::file_type::regular || type == fs::file_type::not_found || type == fs::file_type::none)
+    return true;
+  msg = filename + (type == fs::file_type::directory ? std::string(": is a directory, not a file")
+                                                   : ": is not a regular file (" + file_type_name(type) + ")");
+  return false;
 }
 
 /// Opens and reads a whole file. False (and a message naming the file) if it cannot be read.
 inline bool slurp_file(const std::string& filename, std::string& text, std::string& msg)
 {
   text.clear();
-  std::error_code ec;
-  if(std::filesystem::is_directory(filename, ec)) {
-    msg = filename + ": is a directory, not a file";
+  if(!is_regular_or_missing(filename, msg))
     return false;
-  }
   errno = 0;
   std::ifstream in(filename, std::ios::in | std::ios::binary);
   if(!in) {
@@ -233,12 +271,13 @@ inline bool slurp_file(const std::string& filename, std::string& text, std::stri
     }
     in.read(&text[0], size);
     if(in.gcount() != size) { msg = filename + ": read error (file could not be read completely)"; text.clear(); return false; }
-  } else if(size < 0 || !in) {
-    // Not seekable (e.g. a pipe): fall back to a stream copy.
-    in.clear();
-    return slurp(in, text, filename, msg);
+    normalise_text(text);
+    return true;
   }
-  return true;
+  // No size to trust (files under /proc report 0): copy the stream.
+  in.clear();
+  in.seekg(0, std::ios::beg);
+  return slurp(in, text, filename, msg);
 }
 
 /// Parses a coordinate token, checking that it is a finite number of sane magnitude.

@@ -25,6 +25,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <new>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -193,10 +194,27 @@ public:
       throw Meshing_error(msg.str());
     }
     if(m_domain.is_point_cloud()) {
+      reserve_cells(cells, level);
       m_tree.refine([&](const Cell_key& k) { return k.level < level; });
       return;
     }
     split_inside_domain(level, side);
+  }
+
+  // Makes room at once for `cells` cells of `level`, which refining to the maximum size makes
+  // at the least. Memory that cannot hold them would run out later anyway, after minutes:
+  // within the cell budget, it is the budget that is too large for this machine.
+  void reserve_cells(double cells, int level)
+  {
+    try {
+      m_tree.reserve(cells < double(m_criteria.max_cells()) ? std::size_t(cells) : m_criteria.max_cells());
+    } catch(const std::bad_alloc&) {
+      std::ostringstream msg;
+      msg << "the maximum size " << m_criteria.max_size() << " needs at least " << cells << " quadtree cells of side "
+          << m_tree.cell_side(level) << ", more than memory holds, though within the cell budget of "
+          << m_criteria.max_cells() << "; coarsen it or lower the cell budget to what memory holds";
+      throw Meshing_error(msg.str());
+    }
   }
 
   // Paper §4.2: the cell holding input point i is no larger than s_i = min_j d_ij.
@@ -309,8 +327,7 @@ private:
     enum Side : unsigned char { UNKNOWN, INSIDE, OUTSIDE };
     // Room for the cells of that size the domain's area holds: fewer than it gets (the
     // boundary's cells come on top), so never a larger node map than growing would make.
-    const double area = CGAL::to_double(domain_area(m_domain, m_loops, m_traits));
-    m_tree.reserve(std::size_t(area / (side * side)));
+    reserve_cells(std::floor(CGAL::to_double(domain_area(m_domain, m_loops, m_traits)) / (side * side)), level);
     const Domain_segments<GeomTraits> boundary(m_domain, m_loops, m_traits);
     auto meets_boundary = [&](const Cell_key& k) { // by boxes: it may say yes too often
       bool any = false;
