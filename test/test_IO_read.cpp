@@ -4,6 +4,7 @@
 //
 // Tests of the domain readers in CGAL/Quad_mesher_2/IO/: .poly, .node, .xy, WKT, read_domain.
 
+#include "qm2_fifo.h"
 #include "qm2_test_kernel.h"
 
 #include <CGAL/Quad_mesher_2/Domain_2.h>
@@ -27,11 +28,9 @@
 #include <regex>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <utility>
 #include <vector>
 
-#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -428,13 +427,7 @@ TEST(IO_read, NonRegularFilesAreRefusedBeforeOpening)
   using namespace qm2_test_io_read;
   const std::string fifo = (scratch_dir() / "fifo.poly").string();
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
-  // Should a reader open the FIFO again, this writer lets the open return (with an empty
-  // file): the test then fails instead of hanging.
-  std::thread([fifo] {
-    std::this_thread::sleep_for(std::chrono::seconds(10));
-    const int fd = ::open(fifo.c_str(), O_WRONLY | O_NONBLOCK);
-    if(fd >= 0) ::close(fd);
-  }).detach();
+  qm2_test::open_fifo_for_writing_after(fifo, std::chrono::seconds(10));
   Domain d;
   std::string err;
   const auto start = std::chrono::steady_clock::now();

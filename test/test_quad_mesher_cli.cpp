@@ -4,6 +4,7 @@
 //
 // The quad-mesher tool end to end: it is run as a user would run it.
 
+#include "qm2_fifo.h"
 #include "qm2_test_kernel.h"
 
 #include <gtest/gtest.h>
@@ -18,9 +19,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <thread>
 
-#include <fcntl.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -250,13 +249,7 @@ TEST(quad_mesher_cli, a_fifo_or_a_device_is_refused_at_once)
   const auto fifo = scratch("input_fifo.poly"), m = scratch("fifo.msh");
   std::filesystem::remove(fifo);
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
-  // should the tool open it again, this writer lets it go on (to an "empty file" error): the
-  // test then fails instead of hanging
-  std::thread([fifo] {
-    std::this_thread::sleep_for(std::chrono::seconds(10));
-    const int fd = ::open(fifo.c_str(), O_WRONLY | O_NONBLOCK);
-    if(fd >= 0) ::close(fd);
-  }).detach();
+  qm2_test::open_fifo_for_writing_after(fifo.string(), std::chrono::seconds(10));
   const auto start = std::chrono::steady_clock::now();
   Cli_run r = run(fifo.string() + " -o " + m.string());
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
