@@ -377,8 +377,7 @@ private:
   bool try_move(std::size_t v)
   {
     if(quads_well_within_60_120(v)) return false; // the test below, without a sine or a root
-    const Local current = local_cost(v, nullptr);
-    if(current.worst <= 30.0) return false;
+    // a recorded move passed the test below from the same state: recalled before its costs
     const Point_2d old = m_zone.xy[v];
     State_hash state;
     Point_2d to;
@@ -386,6 +385,8 @@ private:
       m_zone.xy[v] = to;
       return to != old;
     }
+    const Local current = local_cost(v, nullptr);
+    if(current.worst <= 30.0) return false;
     std::vector<Point_2d>& targets = m_targets;
     targets.push_back(m_zone.parallelogram_targets(v, m_quads_at, targets));
     add_turns_about_corners(v, m_quads_at, targets);
