@@ -1881,6 +1881,58 @@ TEST(Buffer_layers, moves_from_the_last_rounds_states_are_recalled_with_the_same
   EXPECT_EQ(first_round.moves_searched + first_round.moves_recalled, searched.moves_searched);
   EXPECT_EQ(second_round.moves_searched, 0u);
   EXPECT_EQ(second_round.moves_recalled, searched.moves_searched);
+  // the templates' plane searches are recalled too, with the counts they make
+  EXPECT_GT(searched.searched_vertices, 0u);
+  EXPECT_EQ(second_round.searched_vertices, searched.searched_vertices);
+  EXPECT_EQ(second_round.shaped_interior, searched.shaped_interior);
+}
+
+// the templates stage on `core` (local sizes: its longest edge at each vertex), with `memo`
+// keeping the moves
+Mesh templated(Mesh core, const Domain& d, QM::internal::Move_memo* memo, QM::Buffer_report& report)
+{
+  std::vector<double> size(core.points.size(), 0.0);
+  for(const auto& q : core.quads)
+    for(int k = 0; k < 4; ++k) {
+      const double len = std::sqrt(CGAL::to_double(CGAL::squared_distance(core.points[q[k]], core.points[q[(k + 1) % 4]])));
+      for(std::size_t v : { q[k], q[(k + 1) % 4] }) size[v] = (std::max)(size[v], len);
+    }
+  const Loops loops = QM::extract_loops(d);
+  QM::internal::Buffer_layers<K> layers(core, size, d, loops, K(), memo);
+  EXPECT_TRUE(layers.match_loops()) << layers.report().failure;
+  layers.apply_boundary_templates({});
+  layers.apply_connectivity_templates();
+  report = layers.report();
+  return core;
+}
+
+// A template search may move the interior core around its vertex too (relax_interior()):
+// recalled from the round before, it moves the same vertices to the same places, with the
+// same counts. A random 2-opt polygon with four holes (random_sweep.py --seed 4, domain 67):
+// 28 searches, 8 interior vertices moved.
+TEST(Buffer_layers, template_searches_are_recalled_with_the_interior_they_moved)
+{
+  const Domain d = load_test_data("random_twoopt_4_67.poly");
+  ASSERT_FALSE(d.points.empty());
+  Mesher mesher(d);
+  const Mesh core = mesher.run(Stage::CLEARANCE);
+  QM::Buffer_report searched, first_round, second_round;
+  const Mesh without = templated(core, d, nullptr, searched);
+  QM::internal::Move_memo memo;
+  memo.next_round();
+  const Mesh first = templated(core, d, &memo, first_round);
+  memo.next_round();
+  const Mesh second = templated(core, d, &memo, second_round);
+  for(const Mesh* m : { &first, &second }) {
+    EXPECT_TRUE(m->points == without.points);
+    EXPECT_TRUE(m->quads == without.quads);
+  }
+  EXPECT_GT(searched.shaped_interior, 0u);
+  EXPECT_GT(searched.moves_searched, 0u);
+  EXPECT_EQ(second_round.moves_searched, 0u);
+  EXPECT_EQ(second_round.moves_recalled, searched.moves_searched);
+  EXPECT_EQ(second_round.searched_vertices, searched.searched_vertices);
+  EXPECT_EQ(second_round.shaped_interior, searched.shaped_interior);
 }
 
 // Moves are forgotten after a round that did not see them; the last round's are found.

@@ -217,10 +217,11 @@ public:
   }
 
   // Whether a local move from `state` was made in this round or the last (see move_memo.h):
-  // then true, with where it ended in `to`. The state is hashed only where the rounds keep
-  // moves (`memo`): `state_of()` gives it then.
-  template <class State_of>
-  bool recall_move(State_hash& state, const State_of& state_of, Point_2d& to)
+  // then true, with where it ended in `to` (a Point_2d, or Move_memo::Moves for a move of
+  // several points). The state is hashed only where the rounds keep moves (`memo`):
+  // `state_of()` gives it then.
+  template <class State_of, class Result>
+  bool recall_move(State_hash& state, const State_of& state_of, Result& to)
   {
     if(memo == nullptr) return false;
     state = state_of();
@@ -229,7 +230,8 @@ public:
     return true;
   }
   // records that the move searched from `state` (given by recall_move()) ended at `to`
-  void record_move(const State_hash& state, const Point_2d& to)
+  template <class Result>
+  void record_move(const State_hash& state, const Result& to)
   {
     ++report.moves_searched;
     if(memo != nullptr) memo->insert(state, to);

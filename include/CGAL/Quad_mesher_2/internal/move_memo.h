@@ -25,10 +25,15 @@ namespace internal {
 
 /// The results of the moves of this round and the last, by their State_hash (see the file
 /// comment). `next_round()` forgets the older round; a result looked up from the last round
-/// is kept for the next.
+/// is kept for the next. A move takes one point (`Point_2d`), or several (`Moves`: a search
+/// that makes room around its vertex).
 class Move_memo
 {
 public:
+  /// the points a move took and where, each by its index in the list of vertices its state
+  /// names (the hash is of their places and connections, not of the mesh's numbering)
+  typedef std::vector<std::pair<std::uint32_t, Point_2d>> Moves;
+
   /// true, with the result in `to`, if a move from this state was recorded in this round or
   /// the last
   bool find(const State_hash& h, Point_2d& to)
@@ -40,34 +45,60 @@ public:
   }
   /// records that a move from the state `h` ended at `to`
   void insert(const State_hash& h, const Point_2d& to) { m_current.insert(h, to); }
+
+  /// as find(), for a move of several points
+  bool find(const State_hash& h, Moves& moves)
+  {
+    std::uint32_t k;
+    if(m_current_several.find(h, k)) {
+      moves = m_current_moves[k];
+      return true;
+    }
+    if(!m_last_several.find(h, k)) return false;
+    moves = m_last_moves[k];
+    insert(h, moves);
+    return true;
+  }
+  /// as insert(), for a move of several points
+  void insert(const State_hash& h, const Moves& moves)
+  {
+    m_current_several.insert(h, std::uint32_t(m_current_moves.size()));
+    m_current_moves.push_back(moves);
+  }
+
   /// to be called as a round starts
   void next_round()
   {
     std::swap(m_last, m_current);
     m_current.clear();
+    std::swap(m_last_several, m_current_several);
+    m_current_several.clear();
+    std::swap(m_last_moves, m_current_moves);
+    m_current_moves.clear();
   }
 
 private:
   // open addressing with linear probing, at most half full
+  template <class Value>
   class Table
   {
   public:
-    bool find(const State_hash& h, Point_2d& to) const
+    bool find(const State_hash& h, Value& to) const
     {
       if(m_slots.empty()) return false;
       for(std::size_t i = index(h);; i = (i + 1) & mask()) {
         const Slot& s = m_slots[i];
         if(s.first == 0) return false;
         if(s.first == h.first() && s.second == h.second()) {
-          to = Point_2d(s.x, s.y);
+          to = s.value;
           return true;
         }
       }
     }
-    void insert(const State_hash& h, const Point_2d& to)
+    void insert(const State_hash& h, const Value& to)
     {
       if(2 * (m_size + 1) > m_slots.size()) grow();
-      place(Slot{ h.first(), h.second(), to.x(), to.y() });
+      place(Slot{ h.first(), h.second(), to });
     }
     void clear()
     {
@@ -79,7 +110,7 @@ private:
     struct Slot
     {
       std::uint64_t first = 0, second = 0;
-      double x = 0, y = 0;
+      Value value{};
     };
     std::size_t mask() const { return m_slots.size() - 1; }
     std::size_t index(const State_hash& h) const { return std::size_t(h.second()) & mask(); }
@@ -104,7 +135,9 @@ private:
     std::size_t m_size = 0;
   };
 
-  Table m_current, m_last;
+  Table<Point_2d> m_current, m_last;
+  Table<std::uint32_t> m_current_several, m_last_several; // indices into the moves below
+  std::vector<Moves> m_current_moves, m_last_moves;
 };
 
 } // namespace internal

@@ -21,6 +21,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -143,6 +144,15 @@ private:
     double best = excess(old);
     if(best == 0 || !out_of_lemma_2_range(m_zone.xy[a], old, m_zone.xy[c]) || m_zone.near_input_corner(b))
       return false;
+    const std::vector<std::size_t> around = interior_around(b, quads_at);
+    std::vector<std::size_t>& named = m_state_vertices;
+    State_hash state;
+    Move_memo::Moves moves;
+    if(m_zone.recall_move(state, [&] { return search_state({ a2, a, b, c, c2 }, around, quads_at, named); }, moves))
+      return replay(moves, b, quads_at);
+    std::vector<Point_2d>& named_before = m_state_positions;
+    named_before.clear();
+    for(std::size_t w : named) named_before.push_back(m_zone.xy[w]);
     const double least_gain = least_search_gain(m_zone.xy[a2], m_zone.xy[a], old, m_zone.xy[c], m_zone.xy[c2]);
     const double e = 0.5 * (length_2d(old - m_zone.xy[a]) + length_2d(m_zone.xy[c] - old));
     auto ring = [&](double r, int k) { return old + (r * e) * unit_directions<12>()[std::size_t(k)]; };
@@ -170,7 +180,6 @@ private:
         }
       std::stable_sort(targets.begin(), targets.end(),
                        [](const auto& x, const auto& y) { return x.first < y.first; });
-      const std::vector<std::size_t> around = interior_around(b, quads_at);
       for(std::size_t t = 0; t < targets.size() && t < 6 && !reshaped; ++t) {
         m_zone.xy[b] = targets[t].second;
         reshaped = admissible_boundary_position(a, b, c, targets[t].second, quads_at, false)
@@ -183,12 +192,70 @@ private:
         m_zone.xy[b] = old;
       }
     }
-    if(best_p == old) return false;
-    m_zone.xy[b] = best_p;
-    m_zone.mesh.points[b] = m_zone.mesh_point(best_p);
-    moved(b, quads_at);
-    ++m_zone.report.searched_vertices;
-    return true;
+    if(best_p != old) {
+      m_zone.xy[b] = best_p;
+      m_zone.mesh.points[b] = m_zone.mesh_point(best_p);
+      moved(b, quads_at);
+      ++m_zone.report.searched_vertices;
+    }
+    for(std::size_t k = 0; k < named.size(); ++k)
+      if(m_zone.xy[named[k]] != named_before[k]) moves.emplace_back(std::uint32_t(k), m_zone.xy[named[k]]);
+    m_zone.record_move(state, moves);
+    return best_p != old;
+  }
+
+  // What search_boundary_vertex() reads past its first tests, hashed (see move_memo.h): the
+  // five cycle vertices about b, b's local size, and the quads at b and at the interior
+  // `around` it, in order, with their corners' positions now and after the clearance,
+  // whether they are on a cycle or fixed, and which they share. `named` lists the vertices
+  // in the order they first appear.
+  State_hash search_state(const std::array<std::size_t, 5>& chain, const std::vector<std::size_t>& around,
+                          const Vertex_quads& quads_at, std::vector<std::size_t>& named) const
+  {
+    State_hash h;
+    h.add(std::uint64_t(0x5E)); // a template search, not a move of one point
+    named.clear();
+    auto name = [&](std::size_t w) {
+      const auto it = std::find(named.begin(), named.end(), w);
+      if(it != named.end()) return std::uint64_t(it - named.begin());
+      named.push_back(w);
+      h.add(m_zone.xy[w]);
+      h.add(m_zone.cleared_xy[w]);
+      h.add(std::uint64_t(m_zone.on_cycle(w)) | std::uint64_t(m_zone.fixed_mark[w]) << 1);
+      return std::uint64_t(named.size() - 1);
+    };
+    for(std::size_t w : chain) h.add(name(w));
+    h.add(m_zone.local_size[chain[2]]);
+    auto add_quads_at = [&](std::size_t u) {
+      h.add(name(u));
+      h.add(std::uint64_t(quads_at[u].size()));
+      for(std::size_t q : quads_at[u])
+        for(std::size_t w : m_zone.mesh.quads[q]) h.add(name(w));
+    };
+    add_quads_at(chain[2]);
+    for(std::size_t u : around) add_quads_at(u);
+    return h;
+  }
+
+  // A search recalled (search_state()): its moves made again, with their marks and counts, as
+  // search_boundary_vertex() and relax_interior() make them; true if b moved
+  bool replay(const Move_memo::Moves& moves, std::size_t b, const Vertex_quads& quads_at)
+  {
+    bool b_moved = false;
+    for(const auto& [k, p] : moves) {
+      const std::size_t v = m_state_vertices[k];
+      m_zone.xy[v] = p;
+      m_zone.mesh.points[v] = m_zone.mesh_point(p);
+      moved(v, quads_at);
+      if(v == b) {
+        b_moved = true;
+        ++m_zone.report.searched_vertices;
+      } else {
+        m_zone.report.shaped_interior += m_zone.shaped_mark[v] == 0 ? 1 : 0;
+        m_zone.shaped_mark[v] = 1;
+      }
+    }
+    return b_moved;
   }
 
   // A vertex still out whose quad's other corners are at the range's ends (a transition
@@ -400,6 +467,8 @@ private:
 
   Buffer_zone<K>& m_zone;
   std::vector<char> m_search_again; // per point: whether search_boundary_vertices() is to search it
+  std::vector<std::size_t> m_state_vertices; // search_state()'s, for their memory
+  std::vector<Point_2d> m_state_positions;   // their positions before a search
 };
 
 } // namespace internal
