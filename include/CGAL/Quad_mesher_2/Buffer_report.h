@@ -40,9 +40,10 @@ struct Buffer_report
   /// the bad-angle quads among the core's quads the templates changed, the first layer's
   /// (Lemma 3) and the second's (Lemma 4)
   std::array<std::size_t, 3> bad_angle_quads_by_layer{ { 0, 0, 0 } };
-  /// the local moves of the first-layer smoothing and the optimiser that were searched, and
-  /// those taken from a state seen in this round or the last (the same result, not searched
-  /// again): after the first round most moves start where the round before left them
+  /// the local moves of the templates' plane search, the first-layer smoothing and the
+  /// optimiser that were searched, and those taken from a state seen in this round or the
+  /// last (the same result, not searched again): after the first round most moves start
+  /// where the round before left them
   std::size_t moves_searched = 0;
   std::size_t moves_recalled = 0;
   /// a message when the buffer could not be built (core loops not matching the domain's)
