@@ -422,28 +422,29 @@ private:
     h.add(std::uint64_t(m_by_excess));
     h.add(m_min_edge2);
     h.add(std::uint64_t(m_zone.is_core_boundary(v)));
+    h.add(std::uint64_t(m_quads_at[v].size()));
+    // a vertex's index in `seen` wherever it appears, then its position and input angle
+    // where it first does (its index is then the count seen before)
     std::vector<std::size_t>& seen = m_state_vertices;
-    seen.assign(1, v);
-    auto local_index = [&](std::size_t w) {
+    seen.clear();
+    auto add_vertex = [&](std::size_t w) {
       const auto it = std::find(seen.begin(), seen.end(), w);
-      if(it != seen.end()) return std::uint64_t(it - seen.begin());
+      h.add(std::uint64_t(it - seen.begin()));
+      if(it != seen.end()) return;
       seen.push_back(w);
-      return std::uint64_t(seen.size() - 1);
+      h.add(m_zone.xy[w]);
+      h.add(m_zone.input_corner_angle(w));
     };
-    h.add(m_zone.xy[v]);
+    add_vertex(v);
     for(std::size_t q : m_quads_at[v])
-      for(std::size_t w : m_zone.mesh.quads[q]) {
-        h.add(local_index(w));
-        h.add(m_zone.xy[w]);
-        h.add(m_zone.input_corner_angle(w));
-      }
+      for(std::size_t w : m_zone.mesh.quads[q]) add_vertex(w);
     const auto slide = m_zone.slides.find(v);
     if(slide == m_zone.slides.end()) return h;
     h.add(std::uint64_t(slide->second.loop));
     h.add(std::uint64_t(slide->second.edge));
     for(std::size_t w : slide->second.neighbors) {
-      h.add(w == none ? ~std::uint64_t(0) : local_index(w));
-      if(w != none) h.add(m_zone.xy[w]);
+      if(w == none) h.add(~std::uint64_t(0));
+      else add_vertex(w);
     }
     return h;
   }

@@ -215,22 +215,24 @@ private:
     State_hash h;
     h.add(std::uint64_t(0x5E)); // a template search, not a move of one point
     named.clear();
+    // a vertex's index in `named` wherever it appears, then what is known of it where it
+    // first does (its index is then the count named before)
     auto name = [&](std::size_t w) {
       const auto it = std::find(named.begin(), named.end(), w);
-      if(it != named.end()) return std::uint64_t(it - named.begin());
+      h.add(std::uint64_t(it - named.begin()));
+      if(it != named.end()) return;
       named.push_back(w);
       h.add(m_zone.xy[w]);
       h.add(m_zone.cleared_xy[w]);
       h.add(std::uint64_t(m_zone.on_cycle(w)) | std::uint64_t(m_zone.fixed_mark[w]) << 1);
-      return std::uint64_t(named.size() - 1);
     };
-    for(std::size_t w : chain) h.add(name(w));
+    for(std::size_t w : chain) name(w);
     h.add(m_zone.local_size[chain[2]]);
     auto add_quads_at = [&](std::size_t u) {
-      h.add(name(u));
+      name(u);
       h.add(std::uint64_t(quads_at[u].size()));
       for(std::size_t q : quads_at[u])
-        for(std::size_t w : m_zone.mesh.quads[q]) h.add(name(w));
+        for(std::size_t w : m_zone.mesh.quads[q]) name(w);
     };
     add_quads_at(chain[2]);
     for(std::size_t u : around) add_quads_at(u);
