@@ -205,22 +205,12 @@ private:
   }
 
   // Whether every quad at v is strictly convex with each angle in [60.01, 119.99] degrees:
-  // then the worst deviation from 90 of local_cost(v) is under 30, by products alone (a
-  // corner's |cos| below 0.4998 and its cross product positive beyond quad_badness()'s flat
-  // threshold, both compared squared).
+  // then the worst deviation from 90 of local_cost(v) is under 30 (quad_well_within())
   bool quads_well_within_60_120(std::size_t v) const
   {
     for(std::size_t q : m_quads_at[v]) {
       const Quad& Q = m_zone.mesh.quads[q];
-      std::array<Vector_2d, 4> e;
-      for(int k = 0; k < 4; ++k) e[k] = m_zone.xy[Q[(k + 1) % 4]] - m_zone.xy[Q[k]];
-      for(int c = 0; c < 4; ++c) {
-        const Vector_2d& in = e[(c + 3) % 4];
-        const Vector_2d& out = e[c];
-        const double cross = CGAL::determinant(in, out), dot = CGAL::scalar_product(in, out);
-        const double ll = in.squared_length() * out.squared_length();
-        if(!(cross > 0 && cross * cross > 1e-12 * ll && dot * dot < 0.2498 * ll)) return false;
-      }
+      if(!quad_well_within({ m_zone.xy[Q[0]], m_zone.xy[Q[1]], m_zone.xy[Q[2]], m_zone.xy[Q[3]] }, 0.2498)) return false;
     }
     return true;
   }

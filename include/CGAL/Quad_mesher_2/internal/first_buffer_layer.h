@@ -127,13 +127,25 @@ private:
     return r;
   }
 
+  // Whether the four quads at F_i are strictly convex with each angle in [70.01, 109.99]
+  // degrees: then local() finds them within [70, 110] (quad_well_within())
+  bool quads_well_within_70_110(std::size_t i) const
+  {
+    const std::size_t p = (i + n - 1) % n, q = (i + 1) % n;
+    const Point_2d &b = m_zone.xy[cyc[i]], &f = F[i], &g = G[i];
+    const double max_cos2 = 0.1169; // sin(20 degrees) squared is 0.11698
+    return quad_well_within({ m_zone.xy[cyc[p]], F[p], f, b }, max_cos2)
+           && quad_well_within({ b, f, F[q], m_zone.xy[cyc[q]] }, max_cos2)
+           && quad_well_within({ F[p], G[p], g, f }, max_cos2) && quad_well_within({ f, g, G[q], F[q] }, max_cos2);
+  }
+
   // Moves F_i, unless its quads are valid and within [70, 110], to the best of the tries:
   // towards the middle of its neighbours, and a few steps in eight directions. True if it
   // moved.
   bool try_move(std::size_t i)
   {
-    Local best = local(i, F[i], [&](const Point_2d&) { return G[i]; }, nullptr);
-    if(best.invalid == 0 && best.out == 0 && best.worst <= 20.0) return false;
+    if(quads_well_within_70_110(i)) return false; // the test below, without a sine or a root
+    // a recorded move failed the test below from the same state: recalled before its costs
     const double h = m_zone.local_size[cyc[i]];
     State_hash state;
     Point_2d to;
@@ -143,6 +155,8 @@ private:
       G[i] = m_zone.locator->closest(to, 2 * h, l).point;
       return true;
     }
+    Local best = local(i, F[i], [&](const Point_2d&) { return G[i]; }, nullptr);
+    if(best.invalid == 0 && best.out == 0 && best.worst <= 20.0) return false;
     Point_2d best_f = F[i], best_g = G[i];
     const Point_2d mid = CGAL::midpoint(F[(i + n - 1) % n], F[(i + 1) % n]);
     tries.clear();

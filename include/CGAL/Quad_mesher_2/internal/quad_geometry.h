@@ -201,6 +201,23 @@ inline Vector_2d right_bisector(const Point_2d& a, const Point_2d& b, const Poin
 
 /// largest deviation of a quad's angles from 90 degrees; a large penalty if it is not strictly
 /// convex and counter-clockwise
+/// Whether every corner of q is strictly convex beyond quad_badness()'s flat threshold with
+/// |cos| squared below `max_cos2`, by products alone (no root, no arcsine): then
+/// quad_badness(q) is below asin(sqrt(max_cos2)), a test the buffer's inner loops make first.
+inline bool quad_well_within(const std::array<Point_2d, 4>& q, double max_cos2)
+{
+  std::array<Vector_2d, 4> e;
+  for(int k = 0; k < 4; ++k) e[k] = q[(k + 1) % 4] - q[k];
+  for(int c = 0; c < 4; ++c) {
+    const Vector_2d& in = e[(c + 3) % 4];
+    const Vector_2d& out = e[c];
+    const double cross = CGAL::determinant(in, out), dot = CGAL::scalar_product(in, out);
+    const double ll = in.squared_length() * out.squared_length();
+    if(!(cross > 0 && cross * cross > 1e-12 * ll && dot * dot < max_cos2 * ll)) return false;
+  }
+  return true;
+}
+
 inline double quad_badness(const std::array<Point_2d, 4>& q)
 {
   // at a convex corner |angle - 90| = asin(|cos angle|), increasing in |cos|: one asin for
