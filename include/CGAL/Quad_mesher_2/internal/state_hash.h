@@ -21,13 +21,17 @@ namespace internal {
 /// A 128-bit hash of a computation's inputs, fed word by word: two lanes with different
 /// seeds and mixers, so that two states of one run agree by chance with odds of about 2^-128
 /// per pair.
+/// Two lanes of 64 bits, each taking a word in an xxHash64 round (a multiply, a rotation, a
+/// multiply: one-to-one in the lane for a given word, and in the word for a given lane), each
+/// read out through splitmix64's finaliser. The lanes differ in their start and their
+/// multipliers.
 class State_hash
 {
 public:
   void add(std::uint64_t w)
   {
-    m_a = mix(m_a ^ w) * 0x9E3779B97F4A7C15ull;
-    m_b = mix(m_b + w * 0xC2B2AE3D27D4EB4Full) ^ (m_b >> 29);
+    m_a = rotl(m_a + w * 0xC2B2AE3D27D4EB4Full, 31) * 0x9E3779B185EBCA87ull;
+    m_b = rotl(m_b ^ (w * 0x165667B19E3779F9ull), 27) * 0xD6E8FEB86659FD93ull;
   }
   void add(double x)
   {
@@ -40,10 +44,11 @@ public:
     add(p.x());
     add(p.y());
   }
-  std::uint64_t first() const { return m_a | 1; } // never 0: 0 marks an empty slot
-  std::uint64_t second() const { return m_b; }
+  std::uint64_t first() const { return mix(m_a) | 1; } // never 0: 0 marks an empty slot
+  std::uint64_t second() const { return mix(m_b); }
 
 private:
+  static std::uint64_t rotl(std::uint64_t x, int r) { return (x << r) | (x >> (64 - r)); }
   // splitmix64's finaliser
   static std::uint64_t mix(std::uint64_t z)
   {
