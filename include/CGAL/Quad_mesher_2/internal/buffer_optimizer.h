@@ -89,16 +89,13 @@ class Buffer_optimizer : Buffer_tolerances
   typedef typename K::Point_2 Point_2;
   typedef Quad_vertices Quad;
   typedef std::pair<std::size_t, std::size_t> Wedge; // a corner at a vertex: (from, to) vertices
-  typedef typename Buffer_zone<K>::Slide Slide;
 
 public:
   explicit Buffer_optimizer(Buffer_zone<K>& zone)
     : m_zone(zone), m_quads_at(zone.mesh.quads, zone.mesh.points.size()),
-      m_min_edge2(square(min_edge_length(zone))), m_slide_of(zone.mesh.points.size(), nullptr),
-      m_dirty(zone.mesh.points.size(), 1), m_dirty_next(zone.mesh.points.size(), 0)
-  {
-    for(const auto& [v, slide] : zone.slides) m_slide_of[v] = &slide;
-  }
+      m_min_edge2(square(min_edge_length(zone))), m_dirty(zone.mesh.points.size(), 1),
+      m_dirty_next(zone.mesh.points.size(), 0)
+  {}
 
   /// Local min-max angle optimisation of the buffer: the first buffer points move freely, the
   /// new boundary points slide along their input edge, the core's boundary vertices move too;
@@ -251,10 +248,10 @@ private:
   // on the other side's edge.
   bool near_next_input_edge(std::size_t v) const
   {
-    const Slide* slide = m_slide_of[v];
-    if(slide == nullptr) return false;
-    const std::vector<Point_2d>& loop = m_zone.locator->loop(slide->loop);
-    const std::size_t n = loop.size(), e = slide->edge;
+    const auto slide = m_zone.slides.find(v);
+    if(slide == m_zone.slides.end()) return false;
+    const std::vector<Point_2d>& loop = m_zone.locator->loop(slide->second.loop);
+    const std::size_t n = loop.size(), e = slide->second.edge;
     auto at = [&](std::size_t k) { return loop[k % n]; };
     const auto distance2 = Approximate_kernel().compute_squared_distance_2_object();
     const Point_2d& p = m_zone.xy[v];
@@ -272,16 +269,16 @@ private:
   // outside's, sums to under 720 degrees: it winds once, and no angle need be summed.
   bool folded_at(std::size_t v, bool convex) const
   {
-    const Slide* slide = m_slide_of[v];
-    if(slide == nullptr && m_zone.is_core_boundary(v)) return false;
+    const auto slide = m_zone.slides.find(v);
+    if(slide == m_zone.slides.end() && m_zone.is_core_boundary(v)) return false;
     const std::vector<Wedge>& chain = corner_chain(v);
     if(chain.empty()) return true;
     const Point_2d& p = m_zone.xy[v];
-    if(slide != nullptr) {
-      const auto& n = slide->neighbors;
+    if(slide != m_zone.slides.end()) {
+      const auto& n = slide->second.neighbors;
       if(Approximate_kernel().angle_2_object()(m_zone.xy[n[0]], p, m_zone.xy[n[1]]) != OBTUSE) return true;
     }
-    if(convex && m_quads_at[v].size() <= (slide == nullptr ? 4u : 2u)) return false;
+    if(convex && m_quads_at[v].size() <= (slide == m_zone.slides.end() ? 4u : 2u)) return false;
     std::vector<std::pair<Point_2d, Point_2d>>& corners = m_wedge_points;
     corners.clear();
     for(const Wedge& w : chain) {
@@ -305,8 +302,8 @@ private:
       const int c = corner_of(Q, v);
       m_chain.emplace_back(Q[(c + 1) % 4], Q[(c + 3) % 4]);
     }
-    const Slide* slide = m_slide_of[v];
-    if(slide != nullptr && !add_outside_wedge(slide->neighbors, m_chain)) m_chain.clear();
+    const auto slide = m_zone.slides.find(v);
+    if(slide != m_zone.slides.end() && !add_outside_wedge(slide->second.neighbors, m_chain)) m_chain.clear();
     if(!closed_chain(m_chain)) m_chain.clear();
     return m_chain;
   }
@@ -431,11 +428,11 @@ private:
     add_vertex(v);
     for(std::size_t q : m_quads_at[v])
       for(std::size_t w : m_zone.mesh.quads[q]) add_vertex(w);
-    const Slide* slide = m_slide_of[v];
-    if(slide == nullptr) return h;
-    h.add(std::uint64_t(slide->loop));
-    h.add(std::uint64_t(slide->edge));
-    for(std::size_t w : slide->neighbors) {
+    const auto slide = m_zone.slides.find(v);
+    if(slide == m_zone.slides.end()) return h;
+    h.add(std::uint64_t(slide->second.loop));
+    h.add(std::uint64_t(slide->second.edge));
+    for(std::size_t w : slide->second.neighbors) {
       if(w == none) h.add(~std::uint64_t(0));
       else add_vertex(w);
     }
@@ -568,13 +565,13 @@ private:
   void write_back(const std::vector<std::size_t>& movable)
   {
     for(std::size_t v : movable) {
-      const Slide* slide = m_slide_of[v];
-      if(slide == nullptr) {
+      auto it = m_zone.slides.find(v);
+      if(it == m_zone.slides.end()) {
         m_zone.mesh.points[v] = m_zone.mesh_point(m_zone.xy[v]);
       } else {
-        const auto& lv = m_zone.loops.loops[slide->loop].vertices;
-        const Point_2& a = m_zone.domain.points[lv[slide->edge]];
-        const Point_2& b = m_zone.domain.points[lv[(slide->edge + 1) % lv.size()]];
+        const auto& lv = m_zone.loops.loops[it->second.loop].vertices;
+        const Point_2& a = m_zone.domain.points[lv[it->second.edge]];
+        const Point_2& b = m_zone.domain.points[lv[(it->second.edge + 1) % lv.size()]];
         const Point_2d A = to_point_2d(a), B = to_point_2d(b);
         const Vector_2d ab = B - A;
         const double t = CGAL::scalar_product(m_zone.xy[v] - A, ab) / ab.squared_length();
@@ -590,9 +587,9 @@ private:
   // serves); false if there is no room
   bool slide_to(std::size_t v, Point_2d& p) const
   {
-    const Slide* slide = m_slide_of[v];
-    if(slide == nullptr) return true;
-    const std::size_t a = slide->neighbors[0], b = slide->neighbors[1];
+    auto it = m_zone.slides.find(v);
+    if(it == m_zone.slides.end()) return true;
+    const std::size_t a = it->second.neighbors[0], b = it->second.neighbors[1];
     if(a == none || b == none) return false;
     const Point_2d A = m_zone.xy[a], B = m_zone.xy[b];
     const Vector_2d ab = B - A;
@@ -603,9 +600,9 @@ private:
     // The neighbours must lie on this point's edge (or be its ends) for the chain to stay on
     // it: within 1e-9 of its length, or the rounding of its coordinates (points on a short
     // edge far from the origin are off its line by more than 1e-9 of it).
-    const std::vector<Point_2d>& loop = m_zone.locator->loop(slide->loop);
-    const Point_2d& E0 = loop[slide->edge];
-    const Point_2d& E1 = loop[(slide->edge + 1) % loop.size()];
+    const std::vector<Point_2d>& loop = m_zone.locator->loop(it->second.loop);
+    const Point_2d& E0 = loop[it->second.edge];
+    const Point_2d& E1 = loop[(it->second.edge + 1) % loop.size()];
     const Vector_2d e = E1 - E0;
     const double el = length_2d(e);
     const double magnitude = (std::max)({ std::abs(E0.x()), std::abs(E0.y()), std::abs(E1.x()), std::abs(E1.y()) });
@@ -619,7 +616,6 @@ private:
   Buffer_zone<K>& m_zone;
   const Vertex_quads m_quads_at;
   const double m_min_edge2; // the square of min_edge_length()
-  std::vector<const Slide*> m_slide_of; // per point: the edge it slides on, if it does (zone.slides)
   bool m_by_excess = false;  // whether moves may lower the excess alone (Local)
   std::vector<char> m_dirty, m_dirty_next; // per point: to try in this pass, in the next
   std::vector<Point_2d> m_targets;         // try_move()'s, kept for their memory
