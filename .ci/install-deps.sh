@@ -10,7 +10,8 @@ packages=(
 if [ "${QM2_WITH_VERIFIER:-0}" = 1 ]; then
   packages+=(python3-meshio python3-numpy python3-scipy python3-shapely python3-matplotlib)
 fi
-# clang and its runtime libraries (the sanitizers): the sanitizer build of .ci/run
+# clang and its runtime libraries (the sanitizers, libFuzzer): the sanitizer build and the
+# fuzz targets of .ci/run
 if [ "${QM2_WITH_CLANG:-0}" = 1 ]; then
   packages+=(clang libclang-rt-dev)
 fi
