@@ -10,6 +10,11 @@ packages=(
 if [ "${QM2_WITH_VERIFIER:-0}" = 1 ]; then
   packages+=(python3-meshio python3-numpy python3-scipy python3-shapely python3-matplotlib)
 fi
+# clang and its runtime libraries (the sanitizers, libFuzzer): the sanitizer build and the
+# fuzz targets of .ci/run
+if [ "${QM2_WITH_CLANG:-0}" = 1 ]; then
+  packages+=(clang libclang-rt-dev)
+fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

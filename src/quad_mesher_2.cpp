@@ -455,7 +455,8 @@ void add_options(CLI::App& app, Options& opt, std::array<CLI::Option*, 2>& splin
 {
   app.add_option("input", opt.input,
                  "input: Triangle .poly or .node, a plain 'x y' point file (.xy .txt .pts .dat), "
-                 "or WKT (.wkt)")->required();
+                 "or WKT (.wkt); a point cloud (no segments) is meshed over its points' bounding "
+                 "box with a margin of 1/8 of its larger side (1/10 to 3/20 above and right)")->required();
   app.add_option("-o,--output", opt.outputs,
                  "output file, format from the extension: .msh (Gmsh 4.1), .vtu (ParaView), .su2 "
                  "(SU2), .inp (Abaqus/CalculiX), .off, .svg (picture, quads coloured by their worst "
@@ -471,7 +472,8 @@ void add_options(CLI::App& app, Options& opt, std::array<CLI::Option*, 2>& splin
     ->check(CLI::IsMember({ "epick", "epeck" }));
   app.add_option("--stop-after", opt.stop_after,
                  "last pipeline stage to run: 'quadtree' writes the strongly balanced, templated "
-                 "quadtree mesh of the input's bounding grid (paper Fig. 3(b)); 'points' (the "
+                 "quadtree mesh of the input's bounding grid, or of a point cloud's box with its "
+                 "margin (paper Fig. 3(b)); 'points' (the "
                  "default for point clouds) also moves a vertex onto every point of a point cloud, or every "
                  "isolated point of a domain (paper §3, Lemma 1); 'clearance' (domains only) "
                  "keeps the core mesh clear of the boundary (paper §4.3, Fig. 3(c)); 'templates' opens the "

@@ -9,6 +9,7 @@
 // domains with holes, every error, the point budget, self-intersection detection, and timing.
 
 #include "qm2_test_kernel.h"
+#include "qm2_time_bounds.h"
 
 #include <CGAL/Quad_mesher_2/Curve_decomposition_2.h>
 #include <CGAL/Quad_mesher_2/Domain_2.h>
@@ -548,7 +549,7 @@ TEST(CurveDecomposition, PointBudget)
   const auto t0 = std::chrono::steady_clock::now();
   e = error_of([&] { CGAL::Quad_mesher_2::decompose_closed_spline<K>(ellipse(12, 1, 1), o); });
   EXPECT_TRUE(contains(e, "max_points_per_loop = 100000")) << e;
-  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 1.0);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), qm2_test::time_bound(1.0));
   o.max_points_per_loop = 8;  // fewer than the control points
   e = error_of([&] { CGAL::Quad_mesher_2::decompose_closed_spline<K>(ellipse(12, 1, 1), o); });
   EXPECT_TRUE(contains(e, "max_points_per_loop = 8")) << e;
@@ -603,7 +604,7 @@ TEST(CurveDecomposition, ThousandPointsTiming)
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::cout << "[ timing   ] decompose_closed_spline, 1000 control points -> " << poly.size() << " vertices: " << secs
             << " s\n";
-  EXPECT_LT(secs, 5.0);
+  EXPECT_LT(secs, qm2_test::time_bound(5.0));
   EXPECT_GE(poly.size(), 1000u);
   EXPECT_LE(max_turning_deg(poly), 5 + 1e-9);
   // The same with 100 control points: far fewer user points, the criteria still hold.

@@ -6,6 +6,7 @@
 // isolated points, area, and every validation error with the place it names.
 
 #include "qm2_test_kernel.h"
+#include "qm2_time_bounds.h"
 
 #include <CGAL/Quad_mesher_2/Domain_2.h>
 #include <CGAL/Quad_mesher_2/Domain_loops_2.h>
@@ -239,7 +240,7 @@ TEST(Domain_loops_2, ManySegmentsIsNotQuadratic)
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   ASSERT_EQ(loops.loops.size(), static_cast<std::size_t>(n * n + 1));
   EXPECT_DOUBLE_EQ(area_of(d, loops), (3.0 * n + 1) * (3.0 * n + 1) - 4.0 * n * n);
-  EXPECT_LT(s, 8.0);
+  EXPECT_LT(s, qm2_test::time_bound(8.0));
   std::cout << "[ timing   ] extract_loops on " << d.segments.size() << " segments: " << s << " s" << std::endl;
 }
 

@@ -40,8 +40,12 @@ Domain random_domain(std::size_t n, unsigned seed, double scale = 1, double shif
   return d;
 }
 
-double rect_x1(const Mesher::Quadtree& t) { return t.origin_x() + t.root_cells_x() * t.root_side(); }
-double rect_y1(const Mesher::Quadtree& t) { return t.origin_y() + t.root_cells_y() * t.root_side(); }
+// a point cloud's mesh tiles its rectangle (the points' box with a margin)
+::testing::AssertionResult tiles_its_region(const QM::Quad_mesh_2<K::Point_2>& mesh, const Mesher& mesher)
+{
+  const CGAL::Bbox_2 r = mesher.mesh_region();
+  return qm2_checks::tiles_rectangle(mesh, r.xmin(), r.ymin(), r.xmax(), r.ymax());
+}
 
 TEST(Quadtree_mesher_2, cell_of_each_point_is_no_larger_than_its_spacing)
 {
@@ -57,7 +61,7 @@ TEST(Quadtree_mesher_2, cell_of_each_point_is_no_larger_than_its_spacing)
     auto k = tree.locate(d.points[i]);
     EXPECT_LE(tree.cell_side(k.level), s) << "point " << i;
   }
-  EXPECT_TRUE(qm2_checks::tiles_rectangle(mesh, tree.origin_x(), tree.origin_y(), rect_x1(tree), rect_y1(tree)));
+  EXPECT_TRUE(tiles_its_region(mesh, mesher));
   auto range = qm2_checks::angle_range(mesh);
   EXPECT_GE(range.min, 45 - 1e-9);
   EXPECT_LE(range.max, 135 + 1e-9);
@@ -216,7 +220,7 @@ TEST(Quadtree_mesher_2, user_sizing_field)
   const auto& tree = mesher.quadtree();
   EXPECT_LE(tree.cell_side(tree.locate(K::Point_2(0, 0)).level), 0.02);
   EXPECT_GT(tree.cell_side(tree.locate(K::Point_2(0.95, 0.95)).level), 0.1);
-  EXPECT_TRUE(qm2_checks::tiles_rectangle(mesh, tree.origin_x(), tree.origin_y(), rect_x1(tree), rect_y1(tree)));
+  EXPECT_TRUE(tiles_its_region(mesh, mesher));
   Criteria bad;
   bad.set_sizing_field([](const K::Point_2&) { return K::FT(0); });
   EXPECT_THROW(Mesher(d, bad).run(), QM::Meshing_error);

@@ -9,6 +9,7 @@
 #include "qm2_mesh_checks.h"
 #include "qm2_test_domains.h"
 #include "qm2_test_kernel.h"
+#include "qm2_time_bounds.h"
 
 #include <CGAL/Quad_mesher_2/Domain_loops_2.h>
 #include <CGAL/Quad_mesher_2/IO/read_poly.h>
@@ -462,7 +463,7 @@ TEST(Buffer_zone_clearance, lake_superior)
                 r.removed_near, r.removed_single, seconds, area, lost, lost_area_bound(in));
     check_result(in, r, "lake superior, max size " + std::to_string(h));
     EXPECT_GT(r.removed_single, 0u);
-    EXPECT_LT(seconds, 2.0);  // ~0.02 s optimised for the fine mesh; generous for debug builds
+    EXPECT_LT(seconds, qm2_test::time_bound(2.0)); // ~0.02 s optimised for the fine mesh
     EXPECT_GT(lost, 0);
     if(h > 0) {
       // (On the adaptive mesh the bound, from the coarsest interior cells, says nothing.)

@@ -38,7 +38,7 @@ double aspect(const Mesh& m, std::size_t q)
 }
 
 // Lemma 1 on a mesh: each point is a vertex (exactly), all angles in [45, 135], the quads at
-// each point have aspect ratio <= 1.5, and the mesh tiles its grid rectangle.
+// each point have aspect ratio <= 1.5, and the mesh tiles its rectangle.
 ::testing::AssertionResult lemma_1(const Mesher& mesher, const Mesh& mesh, const std::vector<K::Point_2>& points)
 {
   std::map<std::pair<double, double>, std::vector<std::size_t>> exact; // by coordinates
@@ -66,10 +66,17 @@ double aspect(const Mesh& m, std::size_t q)
   auto range = qm2_checks::angle_range(mesh);
   if(range.min < 45 - 1e-9 || range.max > 135 + 1e-9)
     return ::testing::AssertionFailure() << "angles [" << range.min << ", " << range.max << "]";
-  const auto& t = mesher.quadtree();
-  return qm2_checks::tiles_rectangle(mesh, t.origin_x(), t.origin_y(),
-                                     t.origin_x() + t.root_cells_x() * t.root_side(),
-                                     t.origin_y() + t.root_cells_y() * t.root_side());
+  const CGAL::Bbox_2 r = mesher.mesh_region();
+  return qm2_checks::tiles_rectangle(mesh, r.xmin(), r.ymin(), r.xmax(), r.ymax());
+}
+
+// the bounding box of the mesh's vertices
+CGAL::Bbox_2 vertex_box(const Mesh& mesh)
+{
+  CGAL::Bbox_2 box = mesh.points.front().bbox();
+  for(const K::Point_2& p : mesh.points)
+    box += p.bbox();
+  return box;
 }
 
 // The tents alone, on a uniform tree: for d sampled over its whole range, the bounds the
@@ -180,6 +187,58 @@ TEST(Insert_points, far_from_the_origin_and_tiny_extents)
   check(tiny, "1e-6 extent");
   close = { K::Point_2(0, 0), K::Point_2(1, 1), K::Point_2(0.5, 0.5), K::Point_2(0.5 + 1e-5, 0.5) };
   check(close, "1e-5 of the extent apart");
+}
+
+// A point cloud is meshed over its points' bounding box with a margin, at every stage, not
+// over the root grid, whose power-of-two side is 2 for points in [0,1]^2 (the mesh reached
+// 1.875 there): 1/8 of the larger side below and left, 1/10 to 3/20 above and right.
+void check_extent(const std::vector<K::Point_2>& pts, const CGAL::Bbox_2& points_box, const char* what)
+{
+  SCOPED_TRACE(what);
+  const double extent = (std::max)(points_box.xmax() - points_box.xmin(), points_box.ymax() - points_box.ymin());
+  for(QM::Stage last : { QM::Stage::QUADTREE, QM::Stage::POINTS }) {
+    SCOPED_TRACE(QM::stage_name(last));
+    const Domain d = make(pts);
+    Mesher mesher(d);
+    const Mesh mesh = mesher.run(last);
+    const CGAL::Bbox_2 box = vertex_box(mesh);
+    EXPECT_TRUE(qm2_checks::tiles_rectangle(mesh, box.xmin(), box.ymin(), box.xmax(), box.ymax()));
+    EXPECT_EQ(box, mesher.mesh_region());
+    const double lower = extent / 8, upper_min = extent / 10, upper_max = extent * 3 / 20;
+    EXPECT_LE(box.xmin(), points_box.xmin() - lower);
+    EXPECT_GE(box.xmin(), points_box.xmin() - lower * (1 + 1e-6));
+    EXPECT_LE(box.ymin(), points_box.ymin() - lower);
+    EXPECT_GE(box.ymin(), points_box.ymin() - lower * (1 + 1e-6));
+    EXPECT_GE(box.xmax(), points_box.xmax() + upper_min);
+    EXPECT_LE(box.xmax(), points_box.xmax() + upper_max);
+    EXPECT_GE(box.ymax(), points_box.ymax() + upper_min);
+    EXPECT_LE(box.ymax(), points_box.ymax() + upper_max);
+    auto range = qm2_checks::angle_range(mesh);
+    EXPECT_GE(range.min, 45 - 1e-9);
+    EXPECT_LE(range.max, 135 + 1e-9);
+    if(last == QM::Stage::POINTS) {
+      EXPECT_TRUE(lemma_1(mesher, mesh, mesher.points()));
+    }
+  }
+}
+
+TEST(Insert_points, a_cloud_is_meshed_over_its_own_extent)
+{
+  std::mt19937 rng(14);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<K::Point_2> unit = { K::Point_2(0, 0), K::Point_2(1, 1) }, thin, offset;
+  for(int i = 0; i < 100; ++i) {
+    unit.emplace_back(u(rng), u(rng));
+    thin.emplace_back(3 * u(rng), 0.01 * u(rng));
+    offset.emplace_back(-7 + u(rng), 5 + 0.5 * u(rng));
+  }
+  thin.insert(thin.end(), { K::Point_2(0, 0), K::Point_2(3, 0.01) });
+  offset.insert(offset.end(), { K::Point_2(-7, 5), K::Point_2(-6, 5.5) });
+  check_extent(unit, CGAL::Bbox_2(0, 0, 1, 1), "unit square: inside [-0.15, 1.15]^2");
+  check_extent({ K::Point_2(0, 0), K::Point_2(1, 0), K::Point_2(1, 1), K::Point_2(0, 1) }, CGAL::Bbox_2(0, 0, 1, 1),
+               "the unit square's corners");
+  check_extent(thin, CGAL::Bbox_2(0, 0, 3, 0.01), "a thin strip");
+  check_extent(offset, CGAL::Bbox_2(-7, 5, -6, 5.5), "off the origin");
 }
 
 TEST(Insert_points, duplicates_are_merged_and_counted)

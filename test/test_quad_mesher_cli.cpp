@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <cmath>
@@ -403,6 +404,49 @@ TEST(quad_mesher_cli, point_cloud_points_become_vertices)
   while(in >> x >> y)
     found += mesh.find("\n" + shortest(x) + " " + shortest(y) + " 0\n") != std::string::npos;
   EXPECT_EQ(found, 200);
+}
+
+// A point cloud in [0,1]^2 is meshed inside [-0.15, 1.15]^2 (its bounding box with a margin),
+// around every point, at both stages: not over the root grid, [-0.125, 1.875]^2 there.
+TEST(quad_mesher_cli, point_cloud_is_meshed_over_its_own_extent)
+{
+  auto xy = scratch("extent.xy"), off = scratch("extent.off");
+  {
+    std::ofstream out(xy);
+    out.precision(17);
+    out << "0 0\n1 1\n";
+    for(int i = 1; i < 50; ++i)
+      out << std::fmod(i * 0.618033988749895, 1.0) << " " << std::fmod(i * 0.414213562373095, 1.0) << "\n";
+  }
+  for(const char* stage : { "quadtree", "points" }) {
+    SCOPED_TRACE(stage);
+    Cli_run r = run(xy.string() + " --stop-after " + stage + " --kernel " + kernel_name + " -o " + off.string());
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::ifstream in(off);
+    std::string header;
+    std::size_t vertices = 0, faces = 0, edges = 0;
+    in >> header >> vertices >> faces >> edges;
+    ASSERT_EQ(header, "OFF");
+    double xmin = HUGE_VAL, ymin = HUGE_VAL, xmax = -HUGE_VAL, ymax = -HUGE_VAL, x, y, z;
+    for(std::size_t v = 0; v < vertices && in >> x >> y >> z; ++v) {
+      xmin = (std::min)(xmin, x);
+      ymin = (std::min)(ymin, y);
+      xmax = (std::max)(xmax, x);
+      ymax = (std::max)(ymax, y);
+    }
+    ASSERT_TRUE(in) << "truncated OFF";
+    EXPECT_GE(xmin, -0.15);
+    EXPECT_GE(ymin, -0.15);
+    EXPECT_LE(xmax, 1.15);
+    EXPECT_LE(ymax, 1.15);
+    // with a margin around the points
+    EXPECT_LE(xmin, -0.1);
+    EXPECT_LE(ymin, -0.1);
+    EXPECT_GE(xmax, 1.1);
+    EXPECT_GE(ymax, 1.1);
+  }
+  EXPECT_NE(run("--help").out.find("a point cloud (no segments) is meshed over its points' bounding box"),
+            std::string::npos);
 }
 
 TEST(quad_mesher_cli, duplicate_points_are_named_or_merged_on_request)

@@ -18,6 +18,7 @@
 #include <CGAL/Quad_mesher_2/internal/buffer_layers.h>
 #include <CGAL/Quad_mesher_2/internal/buffer_zone_clearance.h>
 #include <CGAL/Quad_mesher_2/internal/insert_points.h>
+#include <CGAL/Quad_mesher_2/internal/lattice_region.h>
 #include <CGAL/Quad_mesher_2/internal/quadtree_sizing.h>
 #include <CGAL/Quad_mesher_2/internal/refinement_rounds.h>
 
@@ -108,7 +109,8 @@ public:
                     const GeomTraits& traits = GeomTraits()) = delete;
 
   /// Stage 1: merges duplicate input points, refines the quadtree by the criteria (and, with
-  /// `points_as_vertices()`, around every input point), then strongly balances it.
+  /// `points_as_vertices()`, around every input point), then strongly balances it. The mesh
+  /// covers `mesh_region()` of its root grid.
   void build_quadtree()
   {
     auto start = std::chrono::steady_clock::now();
@@ -117,6 +119,7 @@ public:
                                                  [&](std::size_t i) { return input_point_name(m_input_index[i]); },
                                                  m_traits);
     refine(sizing);
+    internal::split_along_region(*m_tree, m_region);
     record("refine", start);
     start = std::chrono::steady_clock::now();
     if(m_criteria.points_as_vertices())
@@ -126,13 +129,13 @@ public:
     record("balance", start);
   }
 
-  /// The conforming all-quad mesh of the whole balanced tree: every leaf replaced by its
-  /// 2-refinement template. Every angle is 45, 90 or 135 degrees.
+  /// The conforming all-quad mesh of the balanced tree over `mesh_region()`: every leaf there
+  /// replaced by its 2-refinement template. Every angle is 45, 90 or 135 degrees.
   Mesh core_mesh()
   {
     CGAL_precondition(m_tree != nullptr);
     auto start = std::chrono::steady_clock::now();
-    Mesh mesh = internal::templated_mesh(*m_tree, &m_quad_cells, &m_vertex_keys);
+    Mesh mesh = internal::templated_mesh(*m_tree, &m_quad_cells, &m_vertex_keys, &m_region);
     record("refinement_templates", start);
     return mesh;
   }
@@ -314,6 +317,19 @@ public:
   {
     CGAL_precondition(m_tree != nullptr);
     return *m_tree;
+  }
+  /// The rectangle `core_mesh()` tiles (after `build_quadtree()`), whose sides are quadtree
+  /// cell sides: for a domain the whole root grid, which the clearance then cuts to the
+  /// domain; for a point cloud the points' bounding box widened by 1/8 of its larger side on
+  /// the lower and left sides, and by 1/10 to 3/20 on the upper and right sides (to a coarse
+  /// cell side), not the root grid, whose power-of-two side can reach twice the cloud's extent.
+  /// The points stage moves no vertex of its sides.
+  CGAL::Bbox_2 mesh_region() const
+  {
+    CGAL_precondition(m_tree != nullptr);
+    return CGAL::Bbox_2(m_tree->origin_x(), m_tree->origin_y(),
+                        m_tree->lattice_x(m_region.level, std::int64_t(m_region.nx)),
+                        m_tree->lattice_y(m_region.level, std::int64_t(m_region.ny)));
   }
   const Timings& timings() const { return m_timings; }
   const Mesh_criteria_2<GeomTraits>& criteria() const { return m_criteria; }
@@ -533,17 +549,28 @@ private:
     return m_traits.construct_iso_rectangle_2_object()(*xs.first, *xs.second, *ys.first, *ys.second);
   }
 
-  // the root grid's box: `box`, the points' (whose doubles are `m_box`), with room around it
-  // when the points must become vertices
+  // the margin around the points' box `m_box`: room around the extreme points for the
+  // refined blocks that make them vertices, when they must become vertices, and around a
+  // point cloud, whose mesh covers that box with the margin (mesh_region())
+  double margin() const
+  {
+    if(!m_criteria.points_as_vertices() && !m_domain.is_point_cloud())
+      return 0;
+    const double xmin = m_box.xmin(), xmax = m_box.xmax(), ymin = m_box.ymin(), ymax = m_box.ymax();
+    const double margin = (std::max)(xmax - xmin, ymax - ymin) / 8;
+    if(margin > 0)
+      return margin;
+    return (std::max)((std::max)(std::abs(xmin), std::abs(ymin)) * 0x1p-20, 0x1p-20);
+  }
+
+  // the root grid's box: `box`, the points' (whose doubles are `m_box`), with the margin
+  // around it
   typename GeomTraits::Iso_rectangle_2 bounding_box(const typename GeomTraits::Iso_rectangle_2& box) const
   {
-    if(!m_criteria.points_as_vertices())
+    const double margin = this->margin();
+    if(margin == 0)
       return box;
-    // Room around the extreme points for the refined blocks that make them vertices.
     const double xmin = m_box.xmin(), xmax = m_box.xmax(), ymin = m_box.ymin(), ymax = m_box.ymax();
-    double margin = (std::max)(xmax - xmin, ymax - ymin) / 8;
-    if(!(margin > 0))
-      margin = (std::max)((std::max)(std::abs(xmin), std::abs(ymin)) * 0x1p-20, 0x1p-20);
     auto make_point = m_traits.construct_point_2_object();
     return m_traits.construct_iso_rectangle_2_object()(
       make_point(FT(std::nextafter(xmin - margin, -HUGE_VAL)), FT(std::nextafter(ymin - margin, -HUGE_VAL))),
@@ -588,6 +615,14 @@ private:
                                  : 4e-9 * std::hypot(m_box.xmax() - m_box.xmin(), m_box.ymax() - m_box.ymin());
     m_tree = std::make_unique<Quadtree>(bounding_box(box), m_criteria.max_depth(), m_traits, finest_side);
     m_tree->set_max_leaves(m_criteria.max_cells());
+    // A point cloud's mesh ends past the upper and right sides of its points' box by 4/5 to
+    // 6/5 of the margin: the wider the range, the coarser the cells along those sides can
+    // be; the narrower margin still holds the points' blocks, or deeper ones.
+    const double margin = this->margin();
+    m_region = m_domain.is_point_cloud()
+                 ? internal::point_cloud_region(*m_tree, m_box.xmax() + margin * 4 / 5, m_box.ymax() + margin * 4 / 5,
+                                                margin * 2 / 5)
+                 : internal::whole_grid(*m_tree);
   }
 
   // Paper §4.2: the sizes the criteria and the input ask for, then the places earlier rounds
@@ -630,7 +665,7 @@ private:
       names.push_back(m_input_index[i]);
       m_anchored_points.push_back(m_points[i]);
     }
-    m_anchors = internal::anchor_points(*m_tree, m_anchored_points, levels,
+    m_anchors = internal::anchor_points(*m_tree, m_anchored_points, levels, m_region,
                                         [&](std::size_t i) { return input_point_name(names[i]); });
     m_point_names = std::move(names);
   }
@@ -680,6 +715,7 @@ private:
   std::vector<std::size_t> m_input_index;       // of each in m_domain.points
   CGAL::Bbox_2 m_box;                           // their bounding box
   std::unique_ptr<Quadtree> m_tree;
+  internal::Lattice_region m_region;            // the part of its grid the mesh covers
   Domain_loops_2<GeomTraits> m_loops;           // of a domain with segments
   std::vector<Point_anchor> m_anchors;
   std::vector<Key_code> m_vertex_keys;          // of the core mesh's vertices

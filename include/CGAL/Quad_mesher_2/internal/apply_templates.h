@@ -9,6 +9,7 @@
 #include <CGAL/Quad_mesher_2/Quad_mesh_2.h>
 #include <CGAL/Quad_mesher_2/internal/Huge_page_allocator.h>
 #include <CGAL/Quad_mesher_2/internal/Key_map.h>
+#include <CGAL/Quad_mesher_2/internal/lattice_region.h>
 #include <CGAL/Quad_mesher_2/internal/template_table.h>
 
 #include <algorithm>
@@ -106,10 +107,12 @@ std::vector<Cell_key> leaves_in_morton_order(const Tree& tree)
 // template. Vertices are deduplicated by their integer key on the finest lattice, never by
 // comparing coordinates. If `quad_cells` is given, it receives the leaf of each quad; if
 // `vertex_keys` is, the key of each vertex on the tree's vertex lattice (`lattice_key(X, Y)`).
+// If `region` is given, only its leaves are meshed (no leaf may cross its sides): templates
+// are chosen in the whole tree, so the mesh is the part of the whole one inside it.
 template <class Tree>
 Quad_mesh_2<typename Tree::Point_2>
 templated_mesh(const Tree& tree, std::vector<Cell_key>* quad_cells = nullptr,
-               std::vector<Key_code>* vertex_keys_out = nullptr)
+               std::vector<Key_code>* vertex_keys_out = nullptr, const Lattice_region* region = nullptr)
 {
   CGAL_precondition(tree.is_strongly_balanced());
   typedef typename Tree::Point_2 Point_2;
@@ -126,7 +129,11 @@ templated_mesh(const Tree& tree, std::vector<Cell_key>* quad_cells = nullptr,
     reserve_on_huge_pages(*quad_cells, expected);
   }
 
-  const std::vector<Cell_key> leaves = leaves_in_morton_order(tree);
+  std::vector<Cell_key> leaves = leaves_in_morton_order(tree);
+  if(region != nullptr)
+    leaves.erase(std::remove_if(leaves.begin(), leaves.end(),
+                                [&](const Cell_key& k) { return !region_contains_cell(*region, k.level, k.i, k.j); }),
+                 leaves.end());
   // Four sibling leaves come one after another in Morton order: half of their template
   // lookups (those at their parent's centre) are known without looking (most leaves are so).
   // 2 MB pages: an entry per leaf, millions.

@@ -10,6 +10,7 @@
 #include <CGAL/Quad_mesher_2/Point_anchor.h>
 #include <CGAL/Quad_mesher_2/Quad_mesh_2.h>
 #include <CGAL/Quad_mesher_2/internal/Key_map.h>
+#include <CGAL/Quad_mesher_2/internal/lattice_region.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -48,18 +49,18 @@ inline double tent_factor(int radius, int ring)
   return radius == 1 ? (ring == 0 ? 1.0 : 0.0) : (ring < 3 ? three[ring] : 0.0);
 }
 
-template <class Tree>
-bool block_in_grid(const Tree& tree, const Point_anchor& a)
+// `true` if the block and rim of `a` lie in the region the mesh covers
+inline bool block_in_region(const Point_anchor& a, const Lattice_region& region)
 {
-  return tree.in_grid(a.level, a.X - a.radius - 1, a.Y - a.radius - 1)
-         && tree.in_grid(a.level, a.X + a.radius, a.Y + a.radius);
+  return region_contains_cell(region, a.level, a.X - a.radius - 1, a.Y - a.radius - 1)
+         && region_contains_cell(region, a.level, a.X + a.radius, a.Y + a.radius);
 }
 
 // The anchor of point p for base level `level`: a radius-1 tent at level or level+1 if p is
 // within 3g/16 of a lattice vertex there, else a radius-3 tent at level.
-// Returns false if the block does not fit in the grid.
+// Returns false if the block does not fit in `region`.
 template <class Tree, class Point_2>
-bool choose_anchor(const Tree& tree, const Point_2& p, int level, Point_anchor& a)
+bool choose_anchor(const Tree& tree, const Point_2& p, int level, const Lattice_region& region, Point_anchor& a)
 {
   const auto& traits = tree.geom_traits();
   const double px = CGAL::to_double(traits.compute_x_2_object()(p));
@@ -73,7 +74,7 @@ bool choose_anchor(const Tree& tree, const Point_2& p, int level, Point_anchor& 
     a.Y = w.second;
     // decided in doubles: the bounds above hold with room to spare up to 0.2 g
     if(std::abs(px - tree.lattice_x(m, w.first)) <= reach
-       && std::abs(py - tree.lattice_y(m, w.second)) <= reach && block_in_grid(tree, a))
+       && std::abs(py - tree.lattice_y(m, w.second)) <= reach && block_in_region(a, region))
       return true;
   }
   auto w = tree.nearest_vertex(p, level);
@@ -81,16 +82,16 @@ bool choose_anchor(const Tree& tree, const Point_2& p, int level, Point_anchor& 
   a.radius = 3;
   a.X = w.first;
   a.Y = w.second;
-  return block_in_grid(tree, a);
+  return block_in_region(a, region);
 }
 
 // Refines `tree` until every anchor's block is as required, deepening the anchors whose
-// block is crowded (split cells, another anchor's cells, or the grid's edge). Balances the
-// tree. `levels[i]` is the first base level tried for points[i]; `name(i)` is how the user
-// knows it, for messages.
+// block is crowded (split cells, another anchor's cells, or the edge of `region`, the part of
+// the grid the mesh covers). Balances the tree. `levels[i]` is the first base level tried for
+// points[i]; `name(i)` is how the user knows it, for messages.
 template <class Tree, class PointRange, class PointName>
 std::vector<Point_anchor> anchor_points(Tree& tree, const PointRange& points, std::vector<int> levels,
-                                        const PointName& name)
+                                        const Lattice_region& region, const PointName& name)
 {
   const std::size_t n = points.size();
   std::vector<Point_anchor> anchors(n);
@@ -111,7 +112,7 @@ std::vector<Point_anchor> anchor_points(Tree& tree, const PointRange& points, st
         for(;;) {
           if(levels[i] > tree.max_depth())
             throw too_deep(i);
-          if(choose_anchor(tree, points[i], levels[i], a))
+          if(choose_anchor(tree, points[i], levels[i], region, a))
             break;
           ++levels[i];
         }
