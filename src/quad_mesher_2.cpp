@@ -283,6 +283,8 @@ void add_buffer(const Options& opt, const Mesher& mesher, nlohmann::ordered_json
                        { "corners_cut", b.cut_corners },
                        { "notches_filled", b.filled_notches },
                        { "corners_split", b.split_corners },
+                       { "fans_that_may_take_four", b.fans_that_may_take_four },
+                       { "fans_of_four", b.fans_of_four },
                        { "buffer_angles_out", b.buffer_angles_out },
                        { "buffer_angles_out_away_from_corners", b.buffer_angles_out_away_from_corners },
                        { "vertices_searched", b.searched_vertices },

@@ -882,6 +882,24 @@ TEST(Buffer_layers, a_flat_fan_far_from_the_origin_is_taken_out)
   EXPECT_EQ(mesher.buffer_report().bad_angle_quads, 0u);
 }
 
+// A convex 76-gon with three holes (random_domains.py --seed 11, domain 23): one strip has
+// two corners over 270 degrees whose fans may take four F points; four pair the quads about
+// one of them better, three those about the other. The strip took four at both or at
+// neither, by the cost of its whole loop; each corner now takes what pairs the quads about
+// it better.
+TEST(Buffer_layers, the_corners_of_one_strip_take_four_fan_points_one_by_one)
+{
+  const Domain d = load_test_data("random_convex_11_23.poly");
+  ASSERT_FALSE(d.points.empty());
+  Mesher mesher(d);
+  const Mesh m = mesher.run(Stage::BUFFER2);
+  check_whole_domain(d, m, "random convex polygon with reflex corners");
+  const QM::Buffer_report& report = mesher.buffer_report();
+  EXPECT_EQ(report.bad_angle_quads, 0u);
+  EXPECT_EQ(report.fans_that_may_take_four, 2u);
+  EXPECT_EQ(report.fans_of_four, 1u);
+}
+
 // The same domain up to the templates: 2.8e-3 across at 2.7e3 from the origin, its angles are
 // known to about 1e-3 degrees on its finest cells, and the template searches followed the
 // coordinates' rounding, step after step of a few units in the last place, each lowering the

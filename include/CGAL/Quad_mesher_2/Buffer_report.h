@@ -33,6 +33,11 @@ struct Buffer_report
   std::size_t shaped_interior = 0;
   std::size_t first_layer_quads = 0;
   std::size_t second_layer_quads = 0;
+  /// corners over 270° whose fan in the second layer may take four F points instead of three
+  /// (see the manual), and those of them that took four: each is decided by the strip's quads
+  /// about it
+  std::size_t fans_that_may_take_four = 0;
+  std::size_t fans_of_four = 0;
   /// quads the buffer stages made or changed that are not strictly convex, and valid ones
   /// with an angle outside [45°, 135°] that no input corner forces
   std::size_t invalid_quads = 0;

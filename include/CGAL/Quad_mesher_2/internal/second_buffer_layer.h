@@ -505,30 +505,106 @@ private:
 
   // The plan with three F points at each corner's fan, or with four where a corner over 270
   // degrees kept a fan of two (its ladder's phase, see may_take_four_fan_points()) and four
-  // pair the strip better.
+  // pair the strip better there: each such corner is decided by the quads about it, so that
+  // a poor quad elsewhere on the loop does not decide every corner at once.
   Strip_plan best_plan()
   {
     const std::vector<Point_2> f_start = f_points();
-    Strip_plan plan = plan_with(std::vector<bool>(nv, false));
-    if(plan.ok) {
-      const std::unordered_map<std::size_t, std::size_t> loop_vertex_of_point = loop_vertices_by_point();
-      std::vector<bool> four_at(nv, false);
-      bool any = false;
-      for(const Quad& q : plan.best.quads) {
-        const int k = m_costs.wide_side_of_reflex_fan(q);
-        auto it = k < 0 ? loop_vertex_of_point.end() : loop_vertex_of_point.find(q[std::size_t(k)]);
-        if(it != loop_vertex_of_point.end() && m_fans.may_take_four_fan_points(l, it->second))
-          any = four_at[it->second] = true;
-      }
-      if(any) {
-        const std::vector<Point_2> f_three = f_points();
-        restore_f_points(f_start);
-        Strip_plan four = plan_with(four_at);
-        if(four.ok && four.best.cost < plan.best.cost) plan = std::move(four);
-        else restore_f_points(f_three);
-      }
+    Strip_plan three = plan_with(std::vector<bool>(nv, false));
+    if(!three.ok) return three;
+    std::vector<Corner_choice> corners = corners_that_may_take_four(three);
+    if(corners.empty()) return three;
+    m_zone.report.fans_that_may_take_four += corners.size();
+    const std::vector<Point_2> f_three = f_points();
+    cost_about_corners(three, corners, false);
+    restore_f_points(f_start);
+    Strip_plan four = plan_with(four_at(corners, true));
+    if(!four.ok) {
+      restore_f_points(f_three);
+      return three;
     }
-    return plan;
+    cost_about_corners(four, corners, true);
+    const std::size_t better_with_four = std::size_t(
+        std::count_if(corners.begin(), corners.end(), [](const Corner_choice& x) { return x.four < x.three; }));
+    if(better_with_four == corners.size()) return take_fans_of_four(std::move(four), corners.size());
+    if(better_with_four == 0) {
+      restore_f_points(f_three);
+      return three;
+    }
+    // a mixed plan, unless the corners' choices interfere (the ladder's phase between them)
+    const std::vector<Point_2> f_four = f_points();
+    restore_f_points(f_start);
+    Strip_plan mixed = plan_with(four_at(corners, false));
+    if(mixed.ok && mixed.best.cost < three.best.cost && mixed.best.cost < four.best.cost)
+      return take_fans_of_four(std::move(mixed), better_with_four);
+    if(four.best.cost < three.best.cost) {
+      restore_f_points(f_four);
+      return take_fans_of_four(std::move(four), corners.size());
+    }
+    restore_f_points(f_three);
+    return three;
+  }
+
+  Strip_plan take_fans_of_four(Strip_plan&& plan, std::size_t fans)
+  {
+    m_zone.report.fans_of_four += fans;
+    return std::move(plan);
+  }
+
+  // a corner that may take four F points: its loop vertex, the F point its fan starts from
+  // in the plan with three, and the cost of the strip's quads about it in either plan
+  struct Corner_choice { std::size_t vertex, f; Cost three, four; };
+
+  std::vector<Corner_choice> corners_that_may_take_four(const Strip_plan& three) const
+  {
+    const std::unordered_map<std::size_t, std::size_t> loop_vertex_of_point = loop_vertices_by_point();
+    std::vector<Corner_choice> corners;
+    std::vector<bool> seen(nv, false);
+    for(const Quad& q : three.best.quads) {
+      const int k = m_costs.wide_side_of_reflex_fan(q);
+      auto it = k < 0 ? loop_vertex_of_point.end() : loop_vertex_of_point.find(q[std::size_t(k)]);
+      if(it == loop_vertex_of_point.end() || seen[it->second] || !m_fans.may_take_four_fan_points(l, it->second))
+        continue;
+      seen[it->second] = true;
+      const std::size_t f = f_index(q);
+      if(f != none) corners.push_back(Corner_choice{ it->second, f, Cost{ 0, 0 }, Cost{ 0, 0 } });
+    }
+    return corners;
+  }
+
+  // the loop vertices of `corners` (all of them, or those better with four)
+  std::vector<bool> four_at(const std::vector<Corner_choice>& corners, bool all) const
+  {
+    std::vector<bool> at(nv, false);
+    for(const Corner_choice& corner : corners)
+      if(all || corner.four < corner.three) at[corner.vertex] = true;
+    return at;
+  }
+
+  // Adds the cost of each quad of `plan` (its F points in place) to the nearest of `corners`
+  // by F points along the cycle (the quads of F points: all but a fan of boundary edges)
+  void cost_about_corners(const Strip_plan& plan, std::vector<Corner_choice>& corners, bool four) const
+  {
+    for(const Quad& q : plan.best.quads) {
+      const std::size_t f = f_index(q);
+      if(f == none) continue;
+      Corner_choice* nearest = &corners.front();
+      std::size_t distance = n;
+      for(Corner_choice& corner : corners) {
+        const std::size_t d = (f + n - corner.f) % n, cyclic_d = (std::min)(d, n - d);
+        if(cyclic_d < distance) { distance = cyclic_d; nearest = &corner; }
+      }
+      (four ? nearest->four : nearest->three).add(m_costs.strip_cost(q));
+    }
+  }
+
+  // the position along the cycle of a first buffer point of `q`, `none` if it has none
+  std::size_t f_index(const Quad& q) const
+  {
+    const std::size_t fbase = m_zone.first_base[c];
+    for(std::size_t v : q)
+      if(v >= fbase && v < fbase + n) return v - fbase;
+    return none;
   }
 
   // the quads of the chosen plan, or a failure
