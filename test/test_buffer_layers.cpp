@@ -882,6 +882,24 @@ TEST(Buffer_layers, a_flat_fan_far_from_the_origin_is_taken_out)
   EXPECT_EQ(mesher.buffer_report().bad_angle_quads, 0u);
 }
 
+// A convex 82-gon with four holes, 4.2e6 from the origin with cells of 0.0156 there
+// (random_domains.py --seed 11, domain 50): doubles hold its angles to about 4e-6 degrees.
+// The optimiser counted a quad out of [45, 135] only 1e-6 degrees past the bound, the final
+// check (as the verifier) 1e-7 past it: it moved a core vertex to make an angle of
+// 135.00000037 degrees, and five refinement rounds left that quad out (exit 4). It now
+// counts a quad out as the check does.
+TEST(Buffer_layers, the_optimiser_counts_an_angle_out_as_the_final_check_does)
+{
+  const Domain d = load_test_data("random_convex_11_50.poly");
+  ASSERT_FALSE(d.points.empty());
+  Mesher mesher(d);
+  const Mesh m = mesher.run(Stage::BUFFER2);
+  check_whole_domain(d, m, "random convex polygon far from the origin");
+  expect_45_135_but_at_input_corners(d, m, "random convex polygon far from the origin", 1e-7);
+  EXPECT_EQ(mesher.buffer_report().bad_angle_quads, 0u);
+  EXPECT_LE(mesher.rounds(), 2);
+}
+
 // A convex 76-gon with three holes (random_domains.py --seed 11, domain 23): one strip has
 // two corners over 270 degrees whose fans may take four F points; four pair the quads about
 // one of them better, three those about the other. The strip took four at both or at
@@ -1799,10 +1817,11 @@ TEST(Buffer_layers, the_rounds_end_when_their_refinement_splits_no_cell)
 
 // The round observer sees each round as it ends (the tool's -v prints them so: a hard input
 // can take minutes a round), once per round, with the figures round_figures() keeps
-// (random_star_5_31 takes two rounds; naca0012_sharp, which took three, now takes one)
+// (random_convex_2_20 takes two rounds; naca0012_sharp and random_star_5_31, which took
+// three and two, now take one)
 TEST(Buffer_layers, the_round_observer_sees_every_round_as_it_ends)
 {
-  const Domain d = load_test_data("random_star_5_31.poly");
+  const Domain d = load_test_data("random_convex_2_20.poly");
   ASSERT_FALSE(d.points.empty());
   Mesher mesher(d);
   std::vector<Mesher::Round_figures> seen;
