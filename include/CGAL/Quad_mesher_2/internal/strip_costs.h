@@ -31,28 +31,25 @@ public:
   explicit Strip_quad_costs(const Buffer_zone<K>& zone) : m_zone(zone) {}
 
   // A quad's cost (Buffer_zone::quad_cost()); 1000, as a flat corner, where a boundary node
-  // that is no input vertex has over 135 degrees between two others: it slides only along its
-  // input edge, so the angle stays nearly straight (the boundary's own), though rounding far
-  // from the origin lets it pass as convex.
+  // between two others has an angle out of [45, 135] that no input corner forces (the middle of
+  // a fan of boundary edges): that angle is the boundary's own, which no later move changes (an
+  // input vertex stays; a point on an input edge only slides along it, so its angle stays nearly
+  // straight though rounding far from the origin lets it pass as convex).
   double cost(const Quad& q) const
   {
     if(q[0] == none) return 2000.0;
     const double b = m_zone.quad_cost(q);
-    return b > 45.0 + angle_tolerance && b < 1000.0 && fixed_angle_out_of_range(q, true) >= 0 ? 1000.0 : b;
+    return b > 45.0 + angle_tolerance && b < 1000.0 && fixed_angle_out_of_range(q) >= 0 ? 1000.0 : b;
   }
 
-  // A quad's cost in the strip's pairing: an angle out of [45, 135] at a boundary node between
-  // two others (the middle of a fan of boundary edges) is the boundary's own angle there,
-  // which no later move changes (an input vertex stays; a point on an input edge only slides
-  // along it), unlike a quad sheared by its F points, which the optimizer straightens: it
-  // costs as much as a hundred degrees more, so that the pairing shears a row rather than span
-  // a wide boundary angle with one quad. So does a quad over 135 degrees on a side of a corner
-  // over 270 degrees (wide_side_of_reflex_fan()).
+  // A quad's cost in the strip's pairing: cost(), and a hundred degrees more for a quad over
+  // 135 degrees on a side of a corner over 270 degrees (wide_side_of_reflex_fan()), so that the
+  // pairing opens such a fan rather than keep a side that no later move straightens.
   double strip_cost(const Quad& q) const
   {
     const double b = cost(q);
     if(b <= 45.0 + angle_tolerance || b >= 1000.0) return b;
-    return fixed_angle_out_of_range(q) >= 0 || wide_side_of_reflex_fan(q) >= 0 ? b + 100.0 : b;
+    return wide_side_of_reflex_fan(q) >= 0 ? b + 100.0 : b;
   }
 
   // everything strip_cost() reads of vertex v: its position, its input corner angle if any,
@@ -65,14 +62,12 @@ public:
   }
 
   // the corner (0 to 3) of q at a boundary node between two others whose angle is out of
-  // [45, 135] and not forced, with `sliding_only` at a node that is no input vertex, or -1
-  int fixed_angle_out_of_range(const Quad& q, bool sliding_only = false) const
+  // [45, 135] and not forced, or -1
+  int fixed_angle_out_of_range(const Quad& q) const
   {
     for(int k = 0; k < 4; ++k) {
       const std::size_t v = q[k], u = q[(k + 3) % 4], w = q[(k + 1) % 4];
-      if((sliding_only && m_zone.is_input_vertex(v)) || !on_boundary_chain(v) || !on_boundary_chain(u)
-         || !on_boundary_chain(w))
-        continue;
+      if(!on_boundary_chain(v) || !on_boundary_chain(u) || !on_boundary_chain(w)) continue;
       const double angle = corner_angle_degrees(m_zone.xy[u], m_zone.xy[v], m_zone.xy[w]);
       if(std::abs(angle - 90.0) > 45.0 + angle_tolerance && !m_zone.forced_angle(v, angle)) return k;
     }
