@@ -56,7 +56,7 @@ public:
         // only the angle of a corner under 45 degrees is forced, as the verifier has it: the
         // other three of the quad spanning it, not the paper's [alpha, 180 - alpha]
         for(int c = 0; c < 4; ++c)
-          if((a[c] < 45.0 - verifier_slack || a[c] > 135.0 + verifier_slack) && !m_zone.forced_angle(Q[c], a[c]))
+          if(angle_out_of_range(a[c]) && !m_zone.forced_angle(Q[c], a[c]))
             bad_angle = true;
       }
       if(!valid_quad) ++m_zone.report.invalid_quads;

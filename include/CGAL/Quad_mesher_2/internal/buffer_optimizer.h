@@ -171,7 +171,7 @@ private:
       worst = (std::max)(worst, b);
       if(b >= 1000.0) {
         ++invalid;
-      } else if(b > 45.0 + verifier_slack) {
+      } else if(deviation_out_of_range(b)) {
         ++out;
         excess += zone.quad_excess(q);
       }
@@ -467,7 +467,7 @@ private:
     std::vector<std::size_t> out;
     for(const Quad& q : m_zone.mesh.quads) {
       const double b = m_zone.made_or_changed(q) ? m_zone.quad_cost(q) : 0.0;
-      if(b > 45.0 + verifier_slack && (with_invalid || b < 1000.0)) out.insert(out.end(), q.begin(), q.end());
+      if(deviation_out_of_range(b) && (with_invalid || b < 1000.0)) out.insert(out.end(), q.begin(), q.end());
     }
     return out;
   }

@@ -32,6 +32,15 @@ struct Buffer_tolerances
   // How far the templates' searches let a core angle leave [45, 135]: rounding only, well
   // below verifier_slack (nothing later need mend it).
   static constexpr double core_slack = 1e-9;
+
+  // out of [45, 135] as the final check (and the verifier) counts it: an angle...
+  static bool angle_out_of_range(double degrees)
+  {
+    return degrees < 45.0 - verifier_slack || degrees > 135.0 + verifier_slack;
+  }
+  // ... and a quad whose worst angle it may move lies `deviation` degrees from 90 (a quad's
+  // cost, Buffer_zone::quad_cost()): what the optimiser and the first-layer smoothing lower
+  static bool deviation_out_of_range(double deviation) { return deviation > 45.0 + verifier_slack; }
 };
 
 } // namespace internal

@@ -51,7 +51,7 @@ class First_point_smoothing : Buffer_tolerances
     void add(double b)
     {
       if(b >= 1000.0) ++invalid;
-      else if(b > 45.0 + verifier_slack) ++out;
+      else if(deviation_out_of_range(b)) ++out;
       worst = (std::max)(worst, b);
       sum += b * b;
     }
