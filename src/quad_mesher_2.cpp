@@ -279,6 +279,7 @@ void add_buffer(const Options& opt, const Mesher& mesher, nlohmann::ordered_json
 {
   const auto& b = mesher.buffer_report();
   report["buffer"] = { { "refinement_rounds", mesher.rounds() - 1 },
+                       { "dropped_core_pieces", b.dropped_core_pieces },
                        { "notches_moved", b.moved_notches },
                        { "corners_cut", b.cut_corners },
                        { "notches_filled", b.filled_notches },

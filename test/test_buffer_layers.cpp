@@ -2122,7 +2122,7 @@ void add_grid(Mesh& m, double x0, double y0, int n, double side)
 }
 
 // Two pieces of core following one loop, cut apart by a narrow passage (two 4 x 4 rooms
-// joined by a channel 0.8 wide, a piece of squares in each): the refinement is asked
+// joined by a channel 0.8 wide, a piece of 3 x 3 squares in each): the refinement is asked
 // across the passage, with cells under its half width, not along the smaller piece (which
 // grew, round after round, while the passage stayed closed: 87770 to 99230 quads in four
 // rounds on a random star, seed 4 domain 75, then rounds of a minute).
@@ -2132,10 +2132,11 @@ TEST(Buffer_layers, a_core_cut_off_by_a_narrow_passage_is_refined_across_it)
                                 Point(10, 4), Point(6, 4), Point(6, 3.4), Point(4, 3.4), Point(4, 4), Point(0, 4) } });
   const Loops loops = QM::extract_loops(d);
   Mesh core;
-  add_grid(core, 1, 1, 2, 1.0);
-  add_grid(core, 7, 1.4, 1, 1.5); // (7, 2.9) nearest the other piece's (3, 3), across the channel
+  add_grid(core, 0.6, 0.6, 3, 0.9);
+  add_grid(core, 6.8, 1.0, 3, 0.8); // (6.8, 3.4) nearest the other piece's (3.3, 3.3), across the channel
   QM::internal::Buffer_layers<K> layers(core, std::vector<double>(core.points.size(), 1.0), d, loops, K());
   EXPECT_FALSE(layers.match_loops());
+  EXPECT_EQ(layers.report().dropped_core_pieces, 0u);
   std::size_t in_passage = 0;
   for(const auto& [p, size] : layers.requests().for_validity)
     if(p.x() > 4 && p.x() < 6) {
@@ -2144,6 +2145,50 @@ TEST(Buffer_layers, a_core_cut_off_by_a_narrow_passage_is_refined_across_it)
       EXPECT_LE(size, 0.4) << p;
     }
   EXPECT_GE(in_passage, 1u);
+}
+
+// A room with a channel tapering to a tip, the core a block of squares in the room and
+// `channel` (n x n squares of side `side` from (x0, y0)) in the channel, cut off from it:
+// whether the buffer stages match the loops, and how many pieces they dropped
+std::pair<bool, std::size_t> match_with_a_piece_in_a_channel(double x0, double y0, int n, double side,
+                                                             bool piece_holds_a_fixed_point = false)
+{
+  const Domain d = polygons({ { Point(0, 0), Point(4, 0), Point(4, 1.5), Point(12, 2), Point(4, 2.5), Point(4, 4),
+                                Point(0, 4) } });
+  const Loops loops = QM::extract_loops(d);
+  Mesh core;
+  add_grid(core, 0.6, 0.6, 3, 0.9);
+  std::vector<double> size(core.points.size(), 0.9);
+  const std::size_t piece_first_point = core.points.size();
+  add_grid(core, x0, y0, n, side);
+  size.resize(core.points.size(), side);
+  const std::size_t quads = core.quads.size();
+  QM::internal::Buffer_layers<K> layers(core, size, d, loops, K());
+  const std::vector<std::size_t> fixed = piece_holds_a_fixed_point ? std::vector<std::size_t>{ piece_first_point }
+                                                                   : std::vector<std::size_t>{};
+  const bool matched = layers.match_loops(fixed);
+  const std::size_t dropped = layers.report().dropped_core_pieces;
+  EXPECT_EQ(core.quads.size(), dropped == 0 ? quads : 9u);
+  return { matched, dropped };
+}
+
+// A piece of core at most two of its cells across, cut off from the rest along a tapering
+// channel (a random 2-opt polygon's 0.4-degree needle, random_domains.py --seed 12, domain
+// 37): refining there made new pieces farther along the channel as fast as it joined them,
+// 16 rounds to 383323 quads with two angles left out. Such a piece is dropped, and the
+// buffer fills its place: 3 rounds, 39583 quads, none out.
+TEST(Buffer_layers, a_small_piece_of_core_cut_off_in_a_channel_is_dropped)
+{
+  EXPECT_EQ(match_with_a_piece_in_a_channel(5.9, 1.875, 1, 0.25), std::make_pair(true, std::size_t(1)));
+  EXPECT_EQ(match_with_a_piece_in_a_channel(5.9, 1.8, 2, 0.2), std::make_pair(true, std::size_t(1)));
+  // three cells across: refined as a piece cut off by a narrow passage
+  EXPECT_EQ(match_with_a_piece_in_a_channel(5.9, 1.8, 3, 0.13), std::make_pair(false, std::size_t(0)));
+  // a domain's isolated point is never lost
+  EXPECT_EQ(match_with_a_piece_in_a_channel(5.9, 1.875, 1, 0.25, true), std::make_pair(false, std::size_t(0)));
+  const Domain d = load_test_data("random_twoopt_12_37.poly");
+  Mesher mesher(d);
+  expect_random_case_meets_45_135(mesher, d, "random 2-opt with a needle along a channel");
+  EXPECT_LE(mesher.rounds(), 3);
 }
 
 // ---- 3. determinism -------------------------------------------------------------------------

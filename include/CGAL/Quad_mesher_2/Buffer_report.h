@@ -17,6 +17,9 @@ namespace Quad_mesher_2 {
 /// `Quadtree_mesher_2::buffer_report()` gives it.
 struct Buffer_report
 {
+  /// pieces of core at most two cells across that matched no loop of the domain, or one a
+  /// larger piece matched, left to the buffer of the others (see the manual)
+  std::size_t dropped_core_pieces = 0;
   /// core boundary vertices moved out into the buffer (notches opened), and in (corners cut)
   std::size_t moved_notches = 0;
   std::size_t cut_corners = 0;

@@ -59,9 +59,11 @@ public:
   const Buffer_report& report() const { return m_zone.report; }
   const Refinement_requests& requests() const { return m_zone.requests; }
 
-  /// Matches the core's boundary loops with the domain's; false (with `report().failure` and
-  /// `requests()`) if they do not match one to one.
-  bool match_loops() { return m_zone.match_loops(); }
+  /// Matches the core's boundary loops with the domain's, after dropping the pieces of core
+  /// at most two cells across that would not match and hold none of `fixed_points` (a
+  /// domain's isolated points); false (with `report().failure` and `requests()`) if they do
+  /// not match one to one.
+  bool match_loops(const std::vector<std::size_t>& fixed_points = {}) { return m_zone.match_loops(fixed_points); }
   /// Stage "templates": core boundary vertices (and interior ones, but `fixed_points`, a
   /// domain's isolated points) move so that their buffer-side angles meet Lemma 2 where the
   /// core allows.

@@ -59,6 +59,9 @@ public:
   typedef Quad_mesh_2<Point_2> Mesh;
   typedef Quad_vertices Quad;
 
+  // a loop, and how many vertices of a core cycle it is nearest
+  typedef std::pair<std::size_t, std::size_t> Vote;
+
   // a new boundary point: it may slide along its input edge between its chain neighbours
   struct Slide
   {
@@ -79,12 +82,18 @@ public:
     core_points = mesh.points.size();
   }
 
-  /// Matches the core's boundary loops with the domain's; false (with `report.failure` and
-  /// `requests`) if they do not match one to one.
-  bool match_loops()
+  /// Matches the core's boundary loops with the domain's, after dropping the small pieces
+  /// of core that would not match (drop_small_unmatched_pieces(): none holds one of
+  /// `fixed_points`); false (with `report.failure` and `requests`) if they do not match one
+  /// to one.
+  bool match_loops(const std::vector<std::size_t>& fixed_points = {})
   {
-    quads_at = std::make_unique<Vertex_quads>(mesh.quads, mesh.points.size());
-    cycles = mesh_boundary_cycles(mesh.quads, *quads_at, mesh.points.size());
+    find_cycles();
+    std::vector<Vote> votes = cycle_votes();
+    if(drop_small_unmatched_pieces(votes, fixed_points)) {
+      find_cycles();
+      votes = cycle_votes();
+    }
     // The layers add a few quads and points per core boundary vertex (about two each on a
     // disc): room for four each now (the clearance's core has it already), or the first one
     // added copies the whole core's arrays into fresh memory.
@@ -99,12 +108,8 @@ public:
     std::vector<std::size_t> owner(loops.loops.size(), none);
     bool ok = true;
     for(std::size_t c = 0; c < cycles.size(); ++c) {
-      std::vector<std::size_t> votes(loops.loops.size(), 0);
-      for(std::size_t v : cycles[c])
-        ++votes[locator->closest(xy[v], 2 * local_size[v]).loop];
-      const std::size_t l = std::size_t(std::max_element(votes.begin(), votes.end()) - votes.begin());
-      const bool same_turn = (cycle_area(c) > 0) == loops.loops[l].is_outer;
-      if(owner[l] != none || !same_turn || 2 * votes[l] <= cycles[c].size()) {
+      const std::size_t l = votes[c].first;
+      if(owner[l] != none || !follows(c, votes[c])) {
         ok = false;
         // the smaller of two cycles following one loop is a piece of core cut off by a
         // narrow passage: refine along it, and across the passage (refining along the
@@ -157,6 +162,98 @@ public:
   bool is_core_boundary(std::size_t v) const
   {
     return v < core_points && on_cycle(v) && !first_built;
+  }
+
+  void find_cycles()
+  {
+    quads_at = std::make_unique<Vertex_quads>(mesh.quads, mesh.points.size());
+    cycles = mesh_boundary_cycles(mesh.quads, *quads_at, mesh.points.size());
+  }
+
+  // per cycle: the loop nearest the most of its vertices, and how many
+  std::vector<Vote> cycle_votes() const
+  {
+    std::vector<Vote> result;
+    std::vector<std::size_t> votes(loops.loops.size());
+    for(const std::vector<std::size_t>& cycle : cycles) {
+      std::fill(votes.begin(), votes.end(), 0);
+      for(std::size_t v : cycle)
+        ++votes[locator->closest(xy[v], 2 * local_size[v]).loop];
+      const std::size_t l = std::size_t(std::max_element(votes.begin(), votes.end()) - votes.begin());
+      result.emplace_back(l, votes[l]);
+    }
+    return result;
+  }
+
+  // whether cycle c follows the loop of its vote (cycle_votes()): nearest most of its
+  // vertices, and turning the same way (the outer side of a piece of core along an outer
+  // loop, a hole in the core around a hole)
+  bool follows(std::size_t c, const Vote& vote) const
+  {
+    const bool same_turn = (cycle_area(c) > 0) == loops.loops[vote.first].is_outer;
+    return same_turn && 2 * vote.second > cycles[c].size();
+  }
+
+  // Drops each piece of core at most two of its largest cells across (its area at most
+  // 4 h^2) that follows no loop, or an outer loop a larger piece follows too: a few cells
+  // left beyond a narrow passage or along a tapering channel, where refining leaves new such
+  // pieces farther along as often as it joins them. The buffer of the other pieces fills
+  // their place; where it cannot, the final check asks for finer cells there. A piece
+  // holding one of `fixed_points` stays. True if any was dropped.
+  bool drop_small_unmatched_pieces(const std::vector<Vote>& votes, const std::vector<std::size_t>& fixed_points)
+  {
+    std::vector<std::size_t> followed(cycles.size(), none), largest(loops.loops.size(), none);
+    for(std::size_t c = 0; c < cycles.size(); ++c) {
+      if(!follows(c, votes[c])) continue;
+      followed[c] = votes[c].first;
+      std::size_t& big = largest[votes[c].first];
+      if(big == none || cycles[big].size() < cycles[c].size()) big = c;
+    }
+    std::vector<char> fixed(mesh.points.size(), 0);
+    for(std::size_t v : fixed_points)
+      if(v < fixed.size()) fixed[v] = 1;
+    std::vector<char> drop(mesh.quads.size(), 0);
+    bool dropped = false;
+    for(std::size_t c = 0; c < cycles.size(); ++c) {
+      const bool unmatched = followed[c] == none || largest[followed[c]] != c;
+      if(unmatched && cycle_area(c) > 0 && is_small_piece(c) && mark_piece(c, fixed, drop)) {
+        dropped = true;
+        ++report.dropped_core_pieces;
+      }
+    }
+    std::size_t kept = 0;
+    for(std::size_t q = 0; q < mesh.quads.size(); ++q)
+      if(!drop[q]) mesh.quads[kept++] = mesh.quads[q];
+    mesh.quads.resize(kept);
+    return dropped;
+  }
+
+  bool is_small_piece(std::size_t c) const
+  {
+    double h = 0;
+    for(std::size_t v : cycles[c]) h = (std::max)(h, local_size[v]);
+    return cycle_area(c) <= 4 * h * h * (1 + 1e-9);
+  }
+
+  // marks in `drop` the quads of the piece of core that cycle c bounds (it has no hole: it is
+  // small), unless it holds a point marked in `fixed`; true if it marked them
+  bool mark_piece(std::size_t c, const std::vector<char>& fixed, std::vector<char>& drop) const
+  {
+    std::vector<std::size_t> piece, stack(cycles[c].begin(), cycles[c].end());
+    std::vector<char> seen(mesh.points.size(), 0);
+    for(std::size_t v : stack) seen[v] = 1;
+    while(!stack.empty()) {
+      const std::size_t v = stack.back();
+      stack.pop_back();
+      if(fixed[v]) return false;
+      for(std::size_t q : (*quads_at)[v]) {
+        piece.push_back(q);
+        for(std::size_t w : mesh.quads[q])
+          if(!seen[w]) { seen[w] = 1; stack.push_back(w); }
+      }
+    }
+    for(std::size_t q : piece) drop[q] = 1;
+    return true;
   }
 
   double cycle_area(std::size_t c) const
