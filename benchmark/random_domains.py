@@ -2,7 +2,7 @@
 """random_domains.py -- seeded random valid domains, the inputs a user meets (issue 24).
 
 Usage:
-    random_domains.py OUT_DIR --seed S --count N [--kinds star,twoopt,convex]
+    random_domains.py OUT_DIR --seed S --count N [--kinds star,twoopt,convex,rectilinear]
 
 Writes N domains OUT_DIR/<kind>_<S>_<i>.poly (i = 0 to N-1, the kind cycling through --kinds)
 in Triangle's .poly format: 1-based, full double precision, vertex and segment marker = loop
@@ -16,6 +16,9 @@ it was made. A domain is:
               until simple (digitised shapes);
       convex: 3 to 100 corners (Valtr's random convex polygon), stretched up to 10 times
               and turned;
+      rectilinear (only when asked for): the outline of 3 to 15 random axis-aligned
+              rectangles of sides 0.03 to 0.5 about the origin, turned in half the domains (CAD parts: steps,
+              slots and thin walls of every width);
   * with it, in 3 domains out of 5, one feature: a spike (outward) or a notch (inward) of
     1 to 5 degrees, a near-collinear run (3 to 10 points off an edge by 1e-12 to 1e-4 of its
     length) or a short edge (a corner cut 1e-6 to 1e-2 of its shorter edge from it);
@@ -33,9 +36,11 @@ import os
 import sys
 
 import numpy as np
-from shapely.geometry import LinearRing, Point, Polygon
+from shapely.geometry import LinearRing, Point, Polygon, box
+from shapely.ops import unary_union
 
-KINDS = ('star', 'twoopt', 'convex')
+KINDS = ('star', 'twoopt', 'convex')  # the default; drawn in turn, so seeds stay reproducible
+ALL_KINDS = KINDS + ('rectilinear',)
 FEATURES = ('none', 'spike', 'notch', 'collinear', 'short_edge')
 FEATURE_CHANCES = (0.4, 0.15, 0.15, 0.15, 0.15)
 HOLE_GAP = 0.02            # least gap between loops, times the outer loop's bbox diagonal
@@ -117,6 +122,24 @@ def convex_loop(rng, corners):
     return counter_clockwise(loop @ np.array([[c, s], [-s, c]]))
 
 
+def rectilinear_loop(rng, rectangles):
+    """The outer boundary of the largest piece of a union of random axis-aligned rectangles,
+    without its collinear points, turned in half the draws; CCW."""
+    while True:
+        corners = rng.uniform(-0.5, 0.5, (rectangles, 2))
+        sides = 10 ** rng.uniform(-1.5, -0.3, (rectangles, 2))
+        union = unary_union([box(x, y, x + w, y + h) for (x, y), (w, h) in zip(corners, sides)])
+        piece = max(getattr(union, 'geoms', [union]), key=lambda g: g.area)
+        loop = np.array(piece.simplify(0).exterior.coords[:-1])
+        if len(loop) >= 4:
+            break
+    if rng.random() < 0.5:
+        turn = rng.uniform(0, 2 * np.pi)
+        c, s = np.cos(turn), np.sin(turn)
+        loop = loop @ np.array([[c, s], [-s, c]])
+    return counter_clockwise(loop)
+
+
 def outer_loop(rng, kind):
     """The outer loop of a domain of the given kind, in [-1, 1]^2, and its description."""
     if kind == 'star':
@@ -124,6 +147,8 @@ def outer_loop(rng, kind):
         return fit_in_unit_square(star_loop(rng, corners, low)), 'radii %g-1' % low
     if kind == 'twoopt':
         return fit_in_unit_square(twoopt_loop(rng, int(rng.integers(3, 61)))), '2-opt'
+    if kind == 'rectilinear':
+        return fit_in_unit_square(rectilinear_loop(rng, int(rng.integers(3, 16)))), 'rectangles'
     return fit_in_unit_square(convex_loop(rng, int(rng.integers(3, 101)))), 'Valtr'
 
 
@@ -324,9 +349,9 @@ def write_domain(out_dir, seed, index, kinds=KINDS):
 
 def kinds_list(text):
     kinds = tuple(text.split(','))
-    unknown = [k for k in kinds if k not in KINDS]
+    unknown = [k for k in kinds if k not in ALL_KINDS]
     if unknown:
-        raise argparse.ArgumentTypeError('unknown kind(s) %s: use %s' % (','.join(unknown), ','.join(KINDS)))
+        raise argparse.ArgumentTypeError('unknown kind(s) %s: use %s' % (','.join(unknown), ','.join(ALL_KINDS)))
     return kinds
 
 
@@ -334,7 +359,7 @@ def add_domain_arguments(parser):
     """--seed, --count and --kinds, shared with random_sweep.py."""
     parser.add_argument('--seed', type=int, required=True)
     parser.add_argument('--count', type=int, required=True, help='how many domains (indices 0 to N-1)')
-    parser.add_argument('--kinds', type=kinds_list, default=KINDS, help='comma-separated, of ' + ','.join(KINDS))
+    parser.add_argument('--kinds', type=kinds_list, default=KINDS, help='comma-separated, of ' + ','.join(ALL_KINDS) + ' (default: ' + ','.join(KINDS) + ')')
 
 
 def main():
