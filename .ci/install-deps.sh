@@ -7,8 +7,9 @@ packages=(
   libcgal-dev libboost-dev libgmp-dev libmpfr-dev
   libgtest-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev
 )
+# the verifier and the solvers that read our outputs back (meshio; CalculiX for the .inp)
 if [ "${QM2_WITH_VERIFIER:-0}" = 1 ]; then
-  packages+=(python3-meshio python3-numpy python3-scipy python3-shapely python3-matplotlib)
+  packages+=(python3-meshio python3-numpy python3-scipy python3-shapely python3-matplotlib calculix-ccx)
 fi
 # clang and its runtime libraries (the sanitizers, libFuzzer): the sanitizer build and the
 # fuzz targets of .ci/run

@@ -373,8 +373,28 @@ inline std::vector<std::pair<std::string, std::vector<std::vector<std::string>>>
   return sections;
 }
 
-/// Reads the nodes and quads of an Abaqus file as our writer writes it, and its node sets.
-inline bool parse_inp(const std::string& text, Read_back& out, std::map<std::string, std::set<std::size_t>>& nsets)
+/// An Abaqus file's element surfaces: by name, the (element, face) pairs of the element sets
+/// it names (faces 1 to 4).
+typedef std::map<std::string, std::set<std::pair<std::size_t, int>>> Inp_surfaces;
+
+/// Reads the numbers of an Abaqus set's data lines (16 a line at most, increasing, each once)
+/// into `set`; false if they break those rules or reach `limit`.
+inline bool read_inp_set(const std::vector<std::vector<std::string>>& lines, std::size_t limit, std::set<std::size_t>& set)
+{
+  for(const auto& f : lines) {
+    if(f.size() > 16)
+      return false;
+    for(const std::string& number : f)
+      if(!set.insert(std::stoul(number)).second || *set.rbegin() != std::stoul(number) || *set.rbegin() > limit)
+        return false;
+  }
+  return true;
+}
+
+/// Reads the nodes and quads of an Abaqus file as our writer writes it, its node sets (nodes
+/// from 0) and its element surfaces (elements from 1).
+inline bool parse_inp(const std::string& text, Read_back& out, std::map<std::string, std::set<std::size_t>>& nsets,
+                      Inp_surfaces* surfaces = nullptr)
 {
   const auto sections = inp_sections(text);
   if(sections.size() < 3 || sections[0].first != "*HEADING" || sections[1].first != "*NODE" ||
@@ -390,17 +410,33 @@ inline bool parse_inp(const std::string& text, Read_back& out, std::map<std::str
       return false;
     out.quads.push_back({std::stoul(f[1]) - 1, std::stoul(f[2]) - 1, std::stoul(f[3]) - 1, std::stoul(f[4]) - 1});
   }
+  std::map<std::string, std::set<std::size_t>> elsets;
+  const std::string nset = "*NSET, NSET=", elset = "*ELSET, ELSET=", surface = "*SURFACE, NAME=", element = ", TYPE=ELEMENT";
   for(std::size_t s = 3; s < sections.size(); ++s) {
-    const std::string head = "*NSET, NSET=";
-    if(sections[s].first.rfind(head, 0) != 0)
-      return false;
-    std::set<std::size_t>& set = nsets[sections[s].first.substr(head.size())];
-    for(const auto& f : sections[s].second) {
-      if(f.size() > 16)
+    const std::string& head = sections[s].first;
+    if(head.rfind(nset, 0) == 0) {
+      std::set<std::size_t> nodes;
+      if(!read_inp_set(sections[s].second, out.points.size(), nodes))
         return false;
-      for(const std::string& node : f)
-        if(!set.insert(std::stoul(node) - 1).second || *set.rbegin() >= out.points.size())
+      for(std::size_t node : nodes)
+        nsets[head.substr(nset.size())].insert(node - 1);
+    } else if(head.rfind(elset, 0) == 0) {
+      if(!read_inp_set(sections[s].second, out.quads.size(), elsets[head.substr(elset.size())]))
+        return false;
+    } else if(head.rfind(surface, 0) == 0 && head.size() > element.size()
+              && head.compare(head.size() - element.size(), element.size(), element) == 0) {
+      const std::string name = head.substr(surface.size(), head.size() - surface.size() - element.size());
+      for(const auto& f : sections[s].second) {
+        if(f.size() != 2 || f[1].size() != 3 || f[1].substr(0, 2) != " S" || elsets.count(f[0]) == 0)
           return false;
+        const int face = f[1][2] - '0';
+        if(face < 1 || face > 4)
+          return false;
+        for(std::size_t e : elsets[f[0]])
+          if(surfaces != nullptr) (*surfaces)[name].insert({e, face});
+      }
+    } else {
+      return false;
     }
   }
   return true;
@@ -546,6 +582,29 @@ TEST(IOWrite, INPNodesElementsAndANodeSetPerMarker)
   const std::map<std::string, std::set<std::size_t>> expected = {
     {"marker_m2", {2, 5}}, {"marker_3", {0, 1, 3, 4, 5}}, {"marker_5", {2, 3}}, {"marker_7", {1, 4}}};
   EXPECT_EQ(nsets, expected);
+  // each marker's element faces, face k from node k to node k + 1 of the element (from 1),
+  // whichever way its boundary edges run
+  Mesh reversed = m;
+  for(auto& e : reversed.boundary_edges)
+    std::swap(e.v0, e.v1);
+  const Inp_surfaces expected_surfaces = {{"marker_m2", {{2, 3}}},
+                                          {"marker_3", {{1, 1}, {2, 2}, {1, 4}}},
+                                          {"marker_5", {{1, 3}}},
+                                          {"marker_7", {{2, 1}}}};
+  for(const Mesh& mesh : {m, reversed}) {
+    std::ostringstream text;
+    ASSERT_TRUE(CGAL::Quad_mesher_2::IO::write_INP(text, mesh));
+    Read_back back;
+    std::map<std::string, std::set<std::size_t>> node_sets;
+    Inp_surfaces surfaces;
+    ASSERT_TRUE(parse_inp(text.str(), back, node_sets, &surfaces)) << text.str();
+    EXPECT_EQ(surfaces, expected_surfaces) << text.str();
+  }
+  // a boundary edge that is no side of a quad: no surface can hold it
+  Mesh across = m;
+  across.boundary_edges.push_back({0, 2, 1});
+  std::ostringstream refused;
+  EXPECT_FALSE(CGAL::Quad_mesher_2::IO::write_INP(refused, across));
 
   // 16 nodes a line at most
   Mesh strip;

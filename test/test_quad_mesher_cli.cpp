@@ -105,6 +105,7 @@ TEST(quad_mesher_cli, solver_formats_carry_the_segment_markers)
   EXPECT_NE(s.find("\nMARKER_TAG= 2\n"), std::string::npos);
   EXPECT_NE(i.find("\n*NSET, NSET=marker_1\n"), std::string::npos);
   EXPECT_NE(i.find("\n*NSET, NSET=marker_2\n"), std::string::npos);
+  EXPECT_NE(i.find("\n*SURFACE, NAME=marker_2, TYPE=ELEMENT\n"), std::string::npos);
   EXPECT_NE(v.find("Name=\"marker\""), std::string::npos);
   // the same quads in each: the count the SU2 file gives, in the others
   const std::size_t at = s.find("NELEM= ") + 7;

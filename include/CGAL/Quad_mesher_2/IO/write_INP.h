@@ -10,14 +10,49 @@
 
 #include <CGAL/number_utils.h>
 
+#include <boost/functional/hash.hpp>
+
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <ostream>
 #include <string>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Quad_mesher_2 {
+namespace internal {
+
+// per boundary edge of `mesh`, 4 q + k for the side k (from corner k to corner k + 1) of quad
+// q it is, in either direction, or std::size_t(-1) if it is no side of a quad
+template <class Point_2>
+std::vector<std::size_t> boundary_edge_faces(const Quad_mesh_2<Point_2>& mesh)
+{
+  std::unordered_map<std::pair<std::size_t, std::size_t>, std::size_t, boost::hash<std::pair<std::size_t, std::size_t>>> edge_of;
+  for(std::size_t e = 0; e < mesh.boundary_edges.size(); ++e) {
+    const auto& b = mesh.boundary_edges[e];
+    edge_of.emplace(std::minmax(b.v0, b.v1), e);
+  }
+  std::vector<std::size_t> faces(mesh.boundary_edges.size(), std::size_t(-1));
+  for(std::size_t q = 0; q < mesh.quads.size(); ++q)
+    for(std::size_t k = 0; k < 4; ++k) {
+      const auto it = edge_of.find(std::minmax(mesh.quads[q][k], mesh.quads[q][(k + 1) % 4]));
+      if(it != edge_of.end()) faces[it->second] = 4 * q + k;
+    }
+  return faces;
+}
+
+// increasing numbers, 16 a line (Abaqus's limit)
+inline void write_inp_numbers(Text_buffer& text, const std::vector<std::size_t>& numbers)
+{
+  for(std::size_t k = 0; k < numbers.size(); ++k)
+    text << numbers[k] << (k + 1 == numbers.size() || k % 16 == 15 ? "\n" : ", ");
+}
+
+} // namespace internal
+
 namespace IO {
 
 /// \ingroup PkgQuadMesher2IO
@@ -26,18 +61,26 @@ namespace IO {
 /// `mesh.points`); `*ELEMENT, TYPE=CPS4, ELSET=domain` with one line `e, a, b, c, d` per quad
 /// (4-node plane-stress elements numbered from 1, nodes counter-clockwise; the set `domain`
 /// holds them all); and per boundary marker of `mesh.boundary_edges`, by increasing marker,
-/// `*NSET, NSET=marker_3` (`marker_m3` for -3) with the nodes of its edges, increasing, 16 a
-/// line (Abaqus's limit). Coordinates are converted with `CGAL::to_double` and written as the
-/// shortest decimals that read back as the same doubles.
-/// Returns `false`, without throwing, if the stream fails or an index is out of range.
+/// `*NSET, NSET=marker_3` (`marker_m3` for -3) with the nodes of its edges, and the element
+/// surface `*SURFACE, NAME=marker_3, TYPE=ELEMENT` of the element faces on its edges (face
+/// `Sk` of an element runs from its node k to its next node), made of the element sets
+/// `marker_3_S1` to `marker_3_S4` it names: what `*DSLOAD`, `*DLOAD` with `Pk`, `*FILM` or a
+/// contact pair takes. Numbers increase, 16 a line (Abaqus's limit). Coordinates are converted
+/// with `CGAL::to_double` and written as the shortest decimals that read back as the same
+/// doubles.
+/// Returns `false`, without throwing, if the stream fails, an index is out of range or a
+/// boundary edge is no side of a quad.
 template <class Point_2>
 bool write_INP(std::ostream& os, const Quad_mesh_2<Point_2>& mesh)
 {
   if(!Quad_mesher_2::internal::mesh_indices_in_range(mesh))
     return false;
+  const std::vector<std::size_t> faces = Quad_mesher_2::internal::boundary_edge_faces(mesh);
+  if(std::find(faces.begin(), faces.end(), std::size_t(-1)) != faces.end())
+    return false;
   return Quad_mesher_2::internal::guarded_write(os, [&](std::ostream& out) {
     Quad_mesher_2::internal::Text_buffer text(out);
-    text << "*HEADING\nQuad_mesher_2: " << mesh.quads.size() << " quads, a node set per boundary marker\n*NODE\n";
+    text << "*HEADING\nQuad_mesher_2: " << mesh.quads.size() << " quads, a node set and an element surface per boundary marker\n*NODE\n";
     std::size_t i = 1;
     for(const Point_2& p : mesh.points)
       text << i++ << ", " << CGAL::to_double(p.x()) << ", " << CGAL::to_double(p.y()) << '\n';
@@ -52,9 +95,24 @@ bool write_INP(std::ostream& os, const Quad_mesh_2<Point_2>& mesh)
         nodes.insert(nodes.end(), { mesh.boundary_edges[e].v0 + 1, mesh.boundary_edges[e].v1 + 1 });
       std::sort(nodes.begin(), nodes.end());
       nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-      text << "*NSET, NSET=" << Quad_mesher_2::internal::marker_name(g.marker).c_str() << '\n';
-      for(std::size_t k = 0; k < nodes.size(); ++k)
-        text << nodes[k] << (k + 1 == nodes.size() || k % 16 == 15 ? "\n" : ", ");
+      const std::string name = Quad_mesher_2::internal::marker_name(g.marker);
+      text << "*NSET, NSET=" << name.c_str() << '\n';
+      Quad_mesher_2::internal::write_inp_numbers(text, nodes);
+      std::array<std::vector<std::size_t>, 4> elements_by_face;
+      for(std::size_t e : g.edges)
+        elements_by_face[faces[e] % 4].push_back(faces[e] / 4 + 1);
+      for(int k = 0; k < 4; ++k) {
+        std::vector<std::size_t>& elements = elements_by_face[std::size_t(k)];
+        std::sort(elements.begin(), elements.end());
+        if(!elements.empty()) {
+          text << "*ELSET, ELSET=" << name.c_str() << "_S" << k + 1 << '\n';
+          Quad_mesher_2::internal::write_inp_numbers(text, elements);
+        }
+      }
+      text << "*SURFACE, NAME=" << name.c_str() << ", TYPE=ELEMENT\n";
+      for(int k = 0; k < 4; ++k)
+        if(!elements_by_face[std::size_t(k)].empty())
+          text << name.c_str() << "_S" << k + 1 << ", S" << k + 1 << '\n';
     }
     text.flush();
     return out.good();
