@@ -6,19 +6,16 @@
 #define CGAL_QUAD_MESHER_2_IO_WRITE_INP_H
 
 #include <CGAL/Quad_mesher_2/Quad_mesh_2.h>
+#include <CGAL/Quad_mesher_2/internal/mesh_adjacency.h>
 #include <CGAL/Quad_mesher_2/internal/write_common.h>
 
 #include <CGAL/number_utils.h>
-
-#include <boost/functional/hash.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cstddef>
 #include <ostream>
 #include <string>
-#include <unordered_map>
-#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -30,17 +27,18 @@ namespace internal {
 template <class Point_2>
 std::vector<std::size_t> boundary_edge_faces(const Quad_mesh_2<Point_2>& mesh)
 {
-  std::unordered_map<std::pair<std::size_t, std::size_t>, std::size_t, boost::hash<std::pair<std::size_t, std::size_t>>> edge_of;
-  for(std::size_t e = 0; e < mesh.boundary_edges.size(); ++e) {
-    const auto& b = mesh.boundary_edges[e];
-    edge_of.emplace(std::minmax(b.v0, b.v1), e);
-  }
-  std::vector<std::size_t> faces(mesh.boundary_edges.size(), std::size_t(-1));
-  for(std::size_t q = 0; q < mesh.quads.size(); ++q)
-    for(std::size_t k = 0; k < 4; ++k) {
-      const auto it = edge_of.find(std::minmax(mesh.quads[q][k], mesh.quads[q][(k + 1) % 4]));
-      if(it != edge_of.end()) faces[it->second] = 4 * q + k;
+  const Vertex_quads quads_at(mesh.quads, mesh.points.size());
+  std::vector<std::size_t> faces;
+  faces.reserve(mesh.boundary_edges.size());
+  for(const auto& e : mesh.boundary_edges) {
+    std::size_t face = std::size_t(-1);
+    for(std::size_t q : quads_at[e.v0]) {
+      const std::size_t c = std::size_t(corner_of(mesh.quads[q], e.v0));
+      if(mesh.quads[q][(c + 1) % 4] == e.v1) face = 4 * q + c;
+      else if(mesh.quads[q][(c + 3) % 4] == e.v1) face = 4 * q + (c + 3) % 4;
     }
+    faces.push_back(face);
+  }
   return faces;
 }
 

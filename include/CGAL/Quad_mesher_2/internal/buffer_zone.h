@@ -209,21 +209,21 @@ public:
       std::size_t& big = largest[votes[c].first];
       if(big == none || cycles[big].size() < cycles[c].size()) big = c;
     }
-    std::vector<char> fixed(mesh.points.size(), 0);
+    std::vector<std::size_t> candidates;
+    for(std::size_t c = 0; c < cycles.size(); ++c)
+      if((followed[c] == none || largest[followed[c]] != c) && cycle_area(c) > 0 && is_small_piece(c))
+        candidates.push_back(c);
+    if(candidates.empty()) return false; // the common case: no pass over the whole mesh
+    std::vector<char> fixed(mesh.points.size(), 0), seen(mesh.points.size(), 0);
     for(std::size_t v : fixed_points)
       if(v < fixed.size()) fixed[v] = 1;
     std::vector<char> drop(mesh.quads.size(), 0);
-    bool dropped = false;
-    for(std::size_t c = 0; c < cycles.size(); ++c) {
-      const bool unmatched = followed[c] == none || largest[followed[c]] != c;
-      if(unmatched && cycle_area(c) > 0 && is_small_piece(c) && mark_piece(c, fixed, drop)) {
-        dropped = true;
-        ++report.dropped_core_pieces;
-      }
-    }
+    for(std::size_t c : candidates)
+      if(mark_piece(c, fixed, seen, drop)) ++report.dropped_core_pieces;
     std::size_t kept = 0;
     for(std::size_t q = 0; q < mesh.quads.size(); ++q)
       if(!drop[q]) mesh.quads[kept++] = mesh.quads[q];
+    const bool dropped = kept < mesh.quads.size();
     mesh.quads.resize(kept);
     return dropped;
   }
@@ -236,11 +236,11 @@ public:
   }
 
   // marks in `drop` the quads of the piece of core that cycle c bounds (it has no hole: it is
-  // small), unless it holds a point marked in `fixed`; true if it marked them
-  bool mark_piece(std::size_t c, const std::vector<char>& fixed, std::vector<char>& drop) const
+  // small), unless it holds a point marked in `fixed`; true if it marked them. `seen` marks
+  // the vertices reached, shared by all pieces: they have none in common.
+  bool mark_piece(std::size_t c, const std::vector<char>& fixed, std::vector<char>& seen, std::vector<char>& drop) const
   {
-    std::vector<std::size_t> piece, stack(cycles[c].begin(), cycles[c].end());
-    std::vector<char> seen(mesh.points.size(), 0);
+    std::vector<std::size_t> piece, stack = cycles[c];
     for(std::size_t v : stack) seen[v] = 1;
     while(!stack.empty()) {
       const std::size_t v = stack.back();
