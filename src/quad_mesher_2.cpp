@@ -8,6 +8,7 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <CGAL/Quad_mesher_2/Boundary_layer_mesher_2.h>
 #include <CGAL/Quad_mesher_2/Curve_decomposition_2.h>
 #include <CGAL/Quad_mesher_2/IO/read_domain.h>
 #include <CGAL/Quad_mesher_2/IO/write_quad_mesh.h>
@@ -26,6 +27,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <string>
 #include <vector>
 #include <unistd.h>
@@ -52,6 +54,10 @@ struct Options
   bool merge_duplicates = false;
   double max_turning_angle = 5;
   double chord_error = 0;
+  int boundary_layers = 0; // 0: none
+  double first_height = 0;
+  double growth = 1.2;
+  std::vector<int> wall_markers;
   bool verbose = false;
 };
 
@@ -350,6 +356,41 @@ void fill_report(const Options& opt, const QM::Domain_2<K>& domain, QM::Stage la
                               { "origin", { tree.origin_x(), tree.origin_y() } } };
 }
 
+QM::Boundary_layer_criteria_2 layer_criteria_of(const Options& opt)
+{
+  return QM::Boundary_layer_criteria_2(opt.boundary_layers, opt.first_height, opt.growth, opt.wall_markers);
+}
+
+// the report's account of the boundary layers; warns where stacks were thinned
+void add_boundary_layers(const Options& opt, const QM::Boundary_layer_report& r, nlohmann::ordered_json& report)
+{
+  nlohmann::json walls = nlohmann::json::array();
+  for(const auto& w : r.walls) {
+    walls.push_back({ { "marker", w.marker },
+                      { "bands", w.bands },
+                      { "fans", w.fans },
+                      { "thinned_bands", w.thinned_bands },
+                      { "thinnest_ratio", w.thinnest_ratio },
+                      { "thinnest_at", w.thinnest_at },
+                      { "first_height", { { "min", w.first_height_min },
+                                          { "median", w.first_height_median },
+                                          { "max", w.first_height_max } } },
+                      { "growth", { { "min", w.growth_min }, { "max", w.growth_max } } },
+                      { "thickness", { { "min", w.thickness_min }, { "max", w.thickness_max } } } });
+    if(w.thinned_bands > 0)
+      std::cerr << "quad-mesher: " << opt.input << ": warning: wall marker " << w.marker << ": " << w.thinned_bands
+                << " boundary-layer bands thinned where the boundary faces the wall closely, down to "
+                << w.thinnest_ratio << " of the stack at (" << w.thinnest_at[0] << ", " << w.thinnest_at[1] << ")\n";
+  }
+  report["boundary_layers"] = { { "layers", r.layers },
+                                { "first_height", opt.first_height },
+                                { "growth", opt.growth },
+                                { "layer_quads", r.layer_quads },
+                                { "angles_in_layers", { r.layer_min_angle, r.layer_max_angle } },
+                                { "angles_outside_layers", { r.outer_min_angle, r.outer_max_angle } },
+                                { "walls", walls } };
+}
+
 // Writes the report under its staged name, if one is asked for: false after printing why not.
 bool write_report(const Options& opt, const nlohmann::ordered_json& report, Staged_outputs& staged)
 {
@@ -378,18 +419,33 @@ int run(const Options& opt)
     return 1;
 
   const QM::Stage last = stop_after_stage(opt, domain);
-  QM::Quadtree_mesher_2<K> mesher(domain, criteria_of<K>(opt, last));
-  if(opt.verbose) // as they end: a hard input can take minutes a round
-    mesher.set_round_observer([](const auto& f) { print_round(std::cerr, f); });
-  QM::Quad_mesh_2<typename K::Point_2> mesh = mesher.run(last);
+  std::unique_ptr<QM::Quadtree_mesher_2<K>> plain;
+  std::unique_ptr<QM::Boundary_layer_mesher_2<K>> layered;
+  QM::Quad_mesh_2<typename K::Point_2> mesh;
+  if(opt.boundary_layers > 0) {
+    layered = std::make_unique<QM::Boundary_layer_mesher_2<K>>(domain, criteria_of<K>(opt, last),
+                                                               layer_criteria_of(opt));
+    if(opt.verbose)
+      layered->set_round_observer([](const auto& f) { print_round(std::cerr, f); });
+    mesh = layered->run();
+  } else {
+    plain = std::make_unique<QM::Quadtree_mesher_2<K>>(domain, criteria_of<K>(opt, last));
+    if(opt.verbose) // as they end: a hard input can take minutes a round
+      plain->set_round_observer([](const auto& f) { print_round(std::cerr, f); });
+    mesh = plain->run(last);
+  }
+  // with boundary layers, the mesher of the domain outside the stacks
+  const QM::Quadtree_mesher_2<K>& mesher = layered ? layered->outer_mesher() : *plain;
   if(mesher.number_of_merged_points() > 0)
     std::cerr << "quad-mesher: " << opt.input << ": merged " << mesher.number_of_merged_points()
               << " duplicate input point(s)\n";
   add_stage_times(opt, mesher, seconds);
+  if(layered)
+    for(const auto& stage : layered->timings()) seconds[stage.first] = stage.second;
 
-  // runs past the clearance checked the whole mesh already (stage "check")
+  // runs past the clearance checked the whole mesh already (stage "check"), but for the stacks
   auto t = Clock::now();
-  const QM::Mesh_quality_2 quality = mesher.quality() ? *mesher.quality() : QM::compute_quality(mesh);
+  const QM::Mesh_quality_2 quality = mesher.quality() && !layered ? *mesher.quality() : QM::compute_quality(mesh);
   seconds["quality"] = seconds_since(t);
 
   t = Clock::now();
@@ -400,6 +456,8 @@ int run(const Options& opt)
   seconds["total"] = seconds_since(start);
 
   fill_report(opt, domain, last, mesher, mesh, quality, report);
+  if(layered)
+    add_boundary_layers(opt, layered->report(), report);
   report["seconds"] = seconds;
   if(!write_report(opt, report, staged))
     return 1;
@@ -512,7 +570,48 @@ void add_options(CLI::App& app, Options& opt, std::array<CLI::Option*, 2>& splin
                  "the cell budget: most quadtree cells to make before stopping with an error (a memory guard: "
                  "the quadtree takes about 110 bytes a cell)")
     ->check(cell_budget());
+  app.add_option("--boundary-layers", opt.boundary_layers,
+                 "boundary layers for CFD: this many quads stacked on every wall edge (with "
+                 "--first-height and --growth); the walls are the holes' loops (the bodies in a far "
+                 "field), or the outer loop of a domain without holes, or those of --wall-markers")
+    ->check(CLI::Range(1, QM::Boundary_layer_criteria_2::max_layers));
+  app.add_option("--first-height", opt.first_height,
+                 "with --boundary-layers: the first layer's height (> 0)");
+  app.add_option("--growth", opt.growth,
+                 "with --boundary-layers: each layer's height over the one below (>= 1; default 1.2)");
+  app.add_option("--wall-markers", opt.wall_markers,
+                 "with --boundary-layers: the boundary markers of the walls' segments (whole loops), "
+                 "comma-separated")
+    ->delimiter(',');
   app.add_flag("-v,--verbose", opt.verbose, "print what each stage did and its time");
+}
+
+// The layer options need --boundary-layers, which needs a first height and the whole pipeline.
+bool layer_options_are_consistent(const Options& opt, const CLI::App& app)
+{
+  if(opt.boundary_layers == 0) {
+    for(const char* name : { "--first-height", "--growth", "--wall-markers" })
+      if(app.count(name) > 0) {
+        std::cerr << "quad-mesher: " << name << " applies only with --boundary-layers\n";
+        return false;
+      }
+    return true;
+  }
+  if(app.count("--first-height") == 0) {
+    std::cerr << "quad-mesher: --boundary-layers needs --first-height\n";
+    return false;
+  }
+  try {
+    layer_criteria_of(opt);
+  } catch(const QM::Meshing_error& e) {
+    std::cerr << "quad-mesher: " << e.what() << "\n";
+    return false;
+  }
+  if(!opt.stop_after.empty() && opt.stop_after != "buffer2") {
+    std::cerr << "quad-mesher: --boundary-layers needs the whole pipeline, not --stop-after " << opt.stop_after << "\n";
+    return false;
+  }
+  return true;
 }
 
 // The spline options do nothing without splines: taking them silently would hide that.
@@ -571,7 +670,8 @@ int main(int argc, char** argv)
     return app.exit(e) == 0 ? 0 : 2;
   }
 
-  if(!spline_options_have_splines(opt, spline_only) || !outputs_are_usable(opt))
+  if(!spline_options_have_splines(opt, spline_only) || !outputs_are_usable(opt)
+     || !layer_options_are_consistent(opt, app))
     return 2;
   try {
     if(opt.kernel == "epeck")

@@ -465,6 +465,35 @@ TEST(quad_mesher_cli, duplicate_points_are_named_or_merged_on_request)
   EXPECT_EQ(report["points_as_vertices"].get<int>(), 3);
 }
 
+TEST(quad_mesher_cli, boundary_layers_on_an_air_foil)
+{
+  const std::string naca = std::string(QM2_DATA_DIR) + "/naca0012/naca0012_sharp.poly";
+  const auto m = scratch("bl.msh"), report = scratch("bl.json");
+  const std::string layers = " --boundary-layers 5 --first-height 1e-3 --growth 1.2";
+  Cli_run r = run(naca + " -o " + m.string() + " --report " + report.string() + layers + " --kernel " + kernel_name);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(slurp(report));
+  ASSERT_TRUE(j.contains("boundary_layers"));
+  const auto& w = j["boundary_layers"]["walls"][0];
+  EXPECT_EQ(w["marker"].get<int>(), 2); // the air foil's loop, the hole
+  EXPECT_NEAR(w["first_height"]["min"].get<double>(), 1e-3, 1e-5);
+  EXPECT_NEAR(w["first_height"]["max"].get<double>(), 1e-3, 1e-5);
+  EXPECT_GE(w["fans"].get<int>(), 1); // the trailing edge
+  EXPECT_TRUE(j["validity"]["valid"].get<bool>());
+  // usage: the layer options need each other; bad values and unknown walls are named
+  EXPECT_EQ(run(naca + " -o " + m.string() + " --boundary-layers 5").status, 2);
+  EXPECT_EQ(run(naca + " -o " + m.string() + " --first-height 1e-3").status, 2);
+  EXPECT_EQ(run(naca + " -o " + m.string() + " --boundary-layers 0 --first-height 1e-3").status, 2);
+  r = run(naca + " -o " + m.string() + " --boundary-layers 5 --first-height -1");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("first boundary-layer height"), std::string::npos) << r.err;
+  EXPECT_EQ(run(naca + " -o " + m.string() + layers + " --growth 0.5").status, 2);
+  EXPECT_EQ(run(naca + " -o " + m.string() + layers + " --stop-after buffer1").status, 2);
+  r = run(naca + " -o " + m.string() + layers + " --wall-markers 9");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("no segment carries wall marker 9"), std::string::npos) << r.err;
+}
+
 TEST(quad_mesher_cli, help_lists_every_option_and_verbose_prints_stages)
 {
   Cli_run r = run("--help");

@@ -75,6 +75,16 @@ public:
   /// under 10^6 leaves)
   std::size_t max_cells() const { return m_max_cells; }
   void set_max_cells(std::size_t n) { m_max_cells = n; }
+  /// With segments in the input: how far from a loop vertex that turns the boundary by less
+  /// than 20° the mesh's boundary may pass where it leaves the vertex out, as a fraction of
+  /// the domain's diagonal (default 1e-3); 0 keeps every loop vertex a mesh vertex.
+  double chord_tolerance() const { return m_chord_tolerance; }
+  void set_chord_tolerance(double t)
+  {
+    if(!(std::isfinite(t) && t >= 0))
+      throw Meshing_error("the chord tolerance must be a finite number >= 0, got " + std::to_string(t));
+    m_chord_tolerance = t;
+  }
   const Sizing_field& sizing_field() const { return m_sizing_field; }
 
   void set_max_size(double s) { check_size(s, "maximum size"); m_max_size = s; check_order(); }
@@ -111,6 +121,7 @@ private:
   bool m_points_as_vertices = true;
   bool m_resolve_narrow_regions = true;
   std::size_t m_max_cells = std::size_t(1) << 23;
+  double m_chord_tolerance = 1e-3;
   Sizing_field m_sizing_field;
 };
 

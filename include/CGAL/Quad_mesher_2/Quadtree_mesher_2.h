@@ -200,7 +200,8 @@ public:
   {
     CGAL_precondition(m_tree != nullptr && !m_domain.is_point_cloud());
     auto start = std::chrono::steady_clock::now();
-    internal::Buffer_layers<GeomTraits> layers(mesh, m_core_vertex_size, m_domain, m_loops, m_traits, &m_move_memo);
+    internal::Buffer_layers<GeomTraits> layers(mesh, m_core_vertex_size, m_domain, m_loops, m_traits, &m_move_memo,
+                                               m_criteria.chord_tolerance());
     bool ok = layers.match_loops(m_point_vertices);
     if(ok && last >= Stage::TEMPLATES) {
       layers.apply_boundary_templates(m_point_vertices);

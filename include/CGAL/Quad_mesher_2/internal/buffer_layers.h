@@ -48,12 +48,15 @@ class Buffer_layers
 
 public:
   /// `memo`, if not null, keeps the results of local moves from one refinement round to the
-  /// next (see move_memo.h)
+  /// next (see move_memo.h); `chord_tolerance`: how far from a loop vertex the boundary may
+  /// pass where it leaves the vertex out, over the domain's diagonal
   Buffer_layers(Mesh& mesh, const std::vector<double>& local_size, const Domain_2<K>& domain,
-                const Domain_loops_2<K>& loops, const K& traits, Move_memo* memo = nullptr)
+                const Domain_loops_2<K>& loops, const K& traits, Move_memo* memo = nullptr,
+                double chord_tolerance = 1e-3)
     : m_zone(mesh, local_size, domain, loops, traits)
   {
     m_zone.memo = memo;
+    m_zone.chord_tolerance = chord_tolerance * m_zone.locator->diagonal();
   }
 
   const Buffer_report& report() const { return m_zone.report; }

@@ -74,7 +74,6 @@ public:
     : mesh(core), local_size(core_size), domain(input), loops(input_loops), traits(kernel)
   {
     locator = make_loop_locator(domain, loops);
-    chord_tolerance = 1e-3 * locator->diagonal();
     xy.reserve(mesh.points.capacity()); // the room the clearance left for the layers' points
     xy.resize(mesh.points.size());
     for(std::size_t v = 0; v < mesh.points.size(); ++v)

@@ -1,0 +1,218 @@
+// Copyright (c) 2026 Quad_mesher_2 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Quad_mesher_2 developers
+//
+// Boundary layers (paper §5, Fig. 9): N quads stacked on every wall edge, heights H, HR,
+// HR^2, ..., conforming with the rest of the mesh, which keeps its [45°, 135°] bound; fans
+// around sharp outward corners; stacks thinned where walls face each other closely.
+
+#include "qm2_mesh_checks.h"
+#include "qm2_test_domains.h"
+#include "qm2_test_kernel.h"
+
+#include <CGAL/Quad_mesher_2/Boundary_layer_mesher_2.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace qm2_test_boundary_layers {
+
+using qm2_test::K;
+using qm2_test::Point_2;
+namespace QM = CGAL::Quad_mesher_2;
+typedef QM::Quad_mesh_2<Point_2> Mesh;
+
+struct Layered
+{
+  Mesh mesh;
+  QM::Boundary_layer_report report;
+};
+
+Layered mesh_with_layers(const QM::Domain_2<K>& d, int n, double h, double r, std::vector<int> walls = {})
+{
+  QM::Boundary_layer_mesher_2<K> mesher(d, QM::Mesh_criteria_2<K>(), QM::Boundary_layer_criteria_2(n, h, r, walls));
+  Layered l;
+  l.mesh = mesher.run();
+  l.report = mesher.report();
+  return l;
+}
+
+// The first layer's height over each wall edge, measured on the mesh alone: the distance of
+// the other two corners of the edge's quad from the edge's line, as the verifier would.
+std::vector<double> first_heights(const Mesh& m, const std::vector<int>& wall_markers)
+{
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> quad_of;
+  for(std::size_t q = 0; q < m.quads.size(); ++q)
+    for(int c = 0; c < 4; ++c) quad_of[{ m.quads[q][c], m.quads[q][(c + 1) % 4] }] = q;
+  std::vector<double> heights;
+  for(const auto& e : m.boundary_edges) {
+    if(std::find(wall_markers.begin(), wall_markers.end(), e.marker) == wall_markers.end()) continue;
+    const auto& quad = m.quads[quad_of.at({ e.v0, e.v1 })];
+    const double ax = CGAL::to_double(m.points[e.v0].x()), ay = CGAL::to_double(m.points[e.v0].y());
+    const double bx = CGAL::to_double(m.points[e.v1].x()), by = CGAL::to_double(m.points[e.v1].y());
+    const double len = std::hypot(bx - ax, by - ay);
+    for(std::size_t v : quad) {
+      if(v == e.v0 || v == e.v1) continue;
+      const double px = CGAL::to_double(m.points[v].x()), py = CGAL::to_double(m.points[v].y());
+      heights.push_back(((bx - ax) * (py - ay) - (by - ay) * (px - ax)) / len);
+    }
+  }
+  return heights;
+}
+
+// the share of `values` within `tolerance` (relative) of `target`
+double share_near(const std::vector<double>& values, double target, double tolerance)
+{
+  std::size_t near = 0;
+  for(double v : values) near += std::abs(v - target) <= tolerance * target ? 1 : 0;
+  return values.empty() ? 0.0 : double(near) / values.size();
+}
+
+TEST(Boundary_layers, a_flat_wall_gets_every_layer_at_its_height)
+{
+  // a plate whose outer loop is the wall (no holes): 90° corners, mitred
+  const QM::Domain_2<K> d = qm2_test::polygons({ qm2_test::rectangle(0, 0, 4, 1) });
+  const double H = 0.005, R = 1.2;
+  const Layered l = mesh_with_layers(d, 8, H, R);
+  EXPECT_TRUE(qm2_checks::is_conforming(l.mesh));
+  EXPECT_TRUE(QM::compute_quality(l.mesh).is_valid());
+  const std::vector<double> h = first_heights(l.mesh, { 1 });
+  ASSERT_FALSE(h.empty());
+  EXPECT_EQ(share_near(h, H, 0.01), 1.0); // every wall edge, the corners' too
+  ASSERT_EQ(l.report.walls.size(), 1u);
+  const auto& w = l.report.walls[0];
+  EXPECT_NEAR(w.first_height_min, H, 0.01 * H);
+  EXPECT_NEAR(w.first_height_max, H, 0.01 * H);
+  EXPECT_NEAR(w.growth_min, R, 0.02 * R);
+  EXPECT_NEAR(w.growth_max, R, 0.02 * R);
+  EXPECT_NEAR(w.thickness_min, QM::Boundary_layer_criteria_2(8, H, R).thickness(), 1e-9);
+  EXPECT_EQ(w.thinned_bands, 0u);
+  EXPECT_EQ(l.report.layer_quads, 8 * w.bands);
+  EXPECT_GE(l.report.layer_min_angle, 45 - 1e-6); // the mitres at the corners: 45° and 135°
+  EXPECT_LE(l.report.layer_max_angle, 135 + 1e-6);
+  EXPECT_GE(l.report.outer_min_angle, 45 - 1e-6);
+  EXPECT_LE(l.report.outer_max_angle, 135 + 1e-6);
+}
+
+TEST(Boundary_layers, a_cylinder_in_a_far_field_keeps_its_angles)
+{
+  const QM::Domain_2<K> d = qm2_test::polygons({ qm2_test::rectangle(-5, -5, 5, 5), qm2_test::disc(0, 0, 0.5, 64) },
+                                               { Point_2(0, 0) });
+  for(int n : { 1, 5, 40 }) {
+    const double H = 0.002 / n, R = 1.15;
+    const Layered l = mesh_with_layers(d, n, H, R); // walls: the hole's loop, by default
+    EXPECT_TRUE(qm2_checks::is_conforming(l.mesh)) << n;
+    EXPECT_TRUE(QM::compute_quality(l.mesh).is_valid()) << n;
+    EXPECT_EQ(share_near(first_heights(l.mesh, { 2 }), H, 0.01), 1.0) << n;
+    ASSERT_EQ(l.report.walls.size(), 1u);
+    EXPECT_EQ(l.report.walls[0].marker, 2);
+    EXPECT_EQ(l.report.walls[0].fans, 0u); // turns of 5.6°: no corner
+    EXPECT_EQ(l.report.layer_quads, std::size_t(n) * l.report.walls[0].bands) << n;
+    EXPECT_GE(l.report.layer_min_angle, 80) << n; // near rectangles
+    EXPECT_LE(l.report.layer_max_angle, 100) << n;
+    EXPECT_GE(l.report.outer_min_angle, 45 - 1e-6) << n;
+    EXPECT_LE(l.report.outer_max_angle, 135 + 1e-6) << n;
+    if(n > 1) {
+      EXPECT_NEAR(l.report.walls[0].growth_min, R, 0.02 * R) << n;
+      EXPECT_NEAR(l.report.walls[0].growth_max, R, 0.02 * R) << n;
+    }
+  }
+}
+
+TEST(Boundary_layers, a_growth_of_one_gives_equal_layers)
+{
+  const QM::Domain_2<K> d = qm2_test::polygons({ qm2_test::rectangle(-5, -5, 5, 5), qm2_test::disc(0, 0, 0.5, 48) },
+                                               { Point_2(0, 0) });
+  const Layered l = mesh_with_layers(d, 6, 0.003, 1.0);
+  EXPECT_TRUE(QM::compute_quality(l.mesh).is_valid());
+  EXPECT_NEAR(l.report.walls[0].growth_min, 1.0, 0.02);
+  EXPECT_NEAR(l.report.walls[0].growth_max, 1.0, 0.02);
+  EXPECT_NEAR(l.report.walls[0].thickness_max, 0.018, 0.018 * 0.01);
+}
+
+TEST(Boundary_layers, reflex_corners_of_the_domain_get_fans)
+{
+  // a square body in a far field: four 270° corners of the domain, each a fan of kites
+  const QM::Domain_2<K> d = qm2_test::polygons({ qm2_test::rectangle(-5, -5, 5, 5), qm2_test::rectangle(0, 0, 1, 1) },
+                                               { Point_2(0.5, 0.5) });
+  const Layered l = mesh_with_layers(d, 5, 0.01, 1.2);
+  EXPECT_TRUE(qm2_checks::is_conforming(l.mesh));
+  EXPECT_TRUE(QM::compute_quality(l.mesh).is_valid());
+  EXPECT_EQ(l.report.walls[0].fans, 4u);
+  EXPECT_GE(l.report.layer_min_angle, 22.5);
+  EXPECT_LE(l.report.layer_max_angle, 157.5);
+  EXPECT_GE(l.report.outer_min_angle, 45 - 1e-6);
+  EXPECT_LE(l.report.outer_max_angle, 135 + 1e-6);
+  // off the corners, every wall edge has its first height
+  EXPECT_NEAR(l.report.walls[0].first_height_min, 0.01, 1e-4);
+  EXPECT_NEAR(l.report.walls[0].first_height_max, 0.01, 1e-4);
+}
+
+TEST(Boundary_layers, a_sharp_trailing_edge_gets_a_valid_fan)
+{
+  // a wedge whose tip turns the domain's boundary by 169° (a 349° corner of the domain)
+  const QM::Domain_2<K> d =
+    qm2_test::polygons({ qm2_test::rectangle(-10, -10, 10, 10),
+                         { Point_2(0, 0.05), Point_2(0, -0.05), Point_2(1, 0), Point_2(0.5, 0.025) } },
+                       { Point_2(0.2, 0) });
+  const Layered l = mesh_with_layers(d, 10, 1e-4, 1.2);
+  EXPECT_TRUE(qm2_checks::is_conforming(l.mesh));
+  EXPECT_TRUE(QM::compute_quality(l.mesh).is_valid());
+  EXPECT_GE(l.report.walls[0].fans, 1u);
+  EXPECT_GE(l.report.outer_min_angle, 45 - 1e-6);
+  EXPECT_LE(l.report.outer_max_angle, 135 + 1e-6);
+}
+
+TEST(Boundary_layers, a_slot_narrower_than_two_stacks_is_thinned_not_overlapped)
+{
+  // two bodies 0.01 apart; a stack of 0.026 on either side would overlap
+  const QM::Domain_2<K> d = qm2_test::polygons(
+    { qm2_test::rectangle(-5, -5, 5, 5), qm2_test::rectangle(0, 0, 1, 1), qm2_test::rectangle(0, 1.01, 1, 2) },
+    { Point_2(0.5, 0.5), Point_2(0.5, 1.5) });
+  const QM::Boundary_layer_criteria_2 layers(10, 0.001, 1.2);
+  ASSERT_GT(2 * layers.thickness(), 0.01);
+  const Layered l = mesh_with_layers(d, 10, 0.001, 1.2);
+  EXPECT_TRUE(qm2_checks::is_conforming(l.mesh));
+  EXPECT_TRUE(QM::compute_quality(l.mesh).is_valid());
+  std::size_t thinned = 0;
+  double thinnest = 1;
+  for(const auto& w : l.report.walls) {
+    thinned += w.thinned_bands;
+    thinnest = (std::min)(thinnest, w.thinnest_ratio);
+  }
+  EXPECT_GT(thinned, 0u);
+  EXPECT_LE(thinnest * layers.thickness(), 0.01 / 3 + 1e-9); // a third of the gap at most
+  EXPECT_GE(l.report.outer_min_angle, 45 - 1e-6);
+  EXPECT_LE(l.report.outer_max_angle, 135 + 1e-6);
+}
+
+TEST(Boundary_layers, bad_values_are_clear_errors)
+{
+  EXPECT_THROW(QM::Boundary_layer_criteria_2(0, 1e-3, 1.2), QM::Meshing_error);
+  EXPECT_THROW(QM::Boundary_layer_criteria_2(5, 0, 1.2), QM::Meshing_error);
+  EXPECT_THROW(QM::Boundary_layer_criteria_2(5, -1e-3, 1.2), QM::Meshing_error);
+  EXPECT_THROW(QM::Boundary_layer_criteria_2(5, 1e-3, 0.9), QM::Meshing_error);
+  EXPECT_THROW(QM::Boundary_layer_criteria_2(5, std::nan(""), 1.2), QM::Meshing_error);
+  EXPECT_THROW(QM::Boundary_layer_criteria_2(1000, 1, 3), QM::Meshing_error); // 3^1000: too thick
+  QM::Domain_2<K> d = qm2_test::polygons({ qm2_test::rectangle(-5, -5, 5, 5), qm2_test::disc(0, 0, 0.5, 32) },
+                                         { Point_2(0, 0) });
+  EXPECT_THROW(mesh_with_layers(d, 5, 1e-3, 1.2, { 7 }), QM::Meshing_error); // no segment has 7
+  d.segment_markers.assign(d.segments.size(), 3);
+  d.segment_markers[5] = 4;
+  try {
+    mesh_with_layers(d, 5, 1e-3, 1.2, { 4 }); // one segment of the disc's loop
+    ADD_FAILURE() << "a loop only partly a wall was taken";
+  } catch(const QM::Meshing_error& e) {
+    EXPECT_NE(std::string(e.what()).find("only partly a wall"), std::string::npos) << e.what();
+  }
+  QM::Domain_2<K> cloud;
+  cloud.points = { Point_2(0, 0), Point_2(1, 1) };
+  EXPECT_THROW(mesh_with_layers(cloud, 5, 1e-3, 1.2), QM::Meshing_error);
+}
+
+} // namespace qm2_test_boundary_layers
