@@ -26,7 +26,6 @@
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef K::Point_2 Point_2;
-typedef K::Iso_rectangle_2 Iso_rectangle_2;
 typedef std::vector<std::pair<Point_2, Point_2>> Segments;
 namespace QM = CGAL::Quad_mesher_2;
 
@@ -38,26 +37,6 @@ double angle_at(const Point_2& v, const Point_2& a, const Point_2& b)
   const double ax = a.x() - v.x(), ay = a.y() - v.y(), bx = b.x() - v.x(), by = b.y() - v.y();
   const double t = std::atan2(ax * by - ay * bx, ax * bx + ay * by) * 180 / 3.14159265358979323846;
   return t < 0 ? t + 360 : t;
-}
-
-// a picture of the part of the mesh in `window`: the quads with a vertex in it (the picture
-// fits them) and the boundary segments with an end in it
-bool write_window_SVG(const std::string& file, const QM::Quad_mesh_2<Point_2>& mesh, const Segments& boundary,
-                      const Iso_rectangle_2& window)
-{
-  QM::Quad_mesh_2<Point_2> part;
-  part.points = mesh.points;
-  for(const auto& q : mesh.quads)
-    for(std::size_t v : q)
-      if(!window.has_on_unbounded_side(mesh.points[v])) {
-        part.quads.push_back(q);
-        break;
-      }
-  Segments segments;
-  for(const auto& s : boundary)
-    if(!window.has_on_unbounded_side(s.first) || !window.has_on_unbounded_side(s.second))
-      segments.push_back(s);
-  return QM::IO::write_SVG(file, part, segments);
 }
 
 int main(int argc, char** argv)
@@ -133,11 +112,11 @@ int main(int argc, char** argv)
     boundary.emplace_back(domain.points[s[0]], domain.points[s[1]]);
   // close-ups (the chord is 1): the air foil, and its trailing edge
   const double x = T.x(), y = T.y();
-  const Iso_rectangle_2 foil_window(x - 1.3, y - 0.5, x + 0.3, y + 0.5);
-  const Iso_rectangle_2 edge_window(x - 0.06, y - 0.03, x + 0.02, y + 0.03);
+  const CGAL::Bbox_2 foil_window(x - 1.3, y - 0.5, x + 0.3, y + 0.5);
+  const CGAL::Bbox_2 edge_window(x - 0.06, y - 0.03, x + 0.02, y + 0.03);
   if(!QM::IO::write_MSH(name + ".msh", mesh) || !QM::IO::write_SVG(name + ".svg", mesh, boundary) ||
-     !write_window_SVG(name + "_near.svg", mesh, boundary, foil_window) ||
-     !write_window_SVG(name + "_trailing_edge.svg", mesh, boundary, edge_window)) {
+     !QM::IO::write_SVG(name + "_near.svg", mesh, boundary, foil_window) ||
+     !QM::IO::write_SVG(name + "_trailing_edge.svg", mesh, boundary, edge_window)) {
     std::cerr << "cannot write " << name << ".msh or its pictures" << std::endl;
     return 1;
   }

@@ -9,6 +9,7 @@
 #include <CGAL/Quad_mesher_2/internal/quad_geometry.h>
 #include <CGAL/Quad_mesher_2/internal/write_common.h>
 
+#include <CGAL/Bbox_2.h>
 #include <CGAL/number_utils.h>
 
 #include <algorithm>
@@ -270,6 +271,29 @@ bool write_SVG(const std::string& filename, const Quad_mesh_2<Point_2>& mesh,
 {
   return Quad_mesher_2::internal::write_to_file(
     filename, [&](std::ostream& os) { return CGAL::Quad_mesher_2::IO::write_SVG(os, mesh, segments); });
+}
+
+/// \ingroup PkgQuadMesher2IO
+/// Writes the SVG picture of the part of `mesh` in `window` to the file `filename`: the quads
+/// with a vertex in it (the picture fits them) and the segments with an end in it. Returns
+/// `false` if the file cannot be written.
+template <class Point_2>
+bool write_SVG(const std::string& filename, const Quad_mesh_2<Point_2>& mesh,
+               const std::vector<std::pair<Point_2, Point_2>>& segments, const CGAL::Bbox_2& window)
+{
+  auto inside = [&](const Point_2& p) {
+    const Quad_mesher_2::internal::Point_2d q = Quad_mesher_2::internal::to_point_2d(p);
+    return window.xmin() <= q.x() && q.x() <= window.xmax() && window.ymin() <= q.y() && q.y() <= window.ymax();
+  };
+  Quad_mesh_2<Point_2> part;
+  part.points = mesh.points;
+  for(const auto& q : mesh.quads)
+    if(std::any_of(q.begin(), q.end(), [&](std::size_t v) { return v < mesh.points.size() && inside(mesh.points[v]); }))
+      part.quads.push_back(q);
+  std::vector<std::pair<Point_2, Point_2>> near;
+  for(const auto& s : segments)
+    if(inside(s.first) || inside(s.second)) near.push_back(s);
+  return CGAL::Quad_mesher_2::IO::write_SVG(filename, part, near);
 }
 
 /// \ingroup PkgQuadMesher2IO

@@ -69,7 +69,7 @@ public:
   {
     Layer_extrusion_result<Point_2> r;
     r.mesh = std::move(outer);
-    r.first_layer_quad = r.mesh.quads.size();
+    r.first_layer_quad = m_outer_quads = r.mesh.quads.size();
     r.fans.assign(m_walls.size(), 0);
     m_wall_node.assign(m_walls.size(), {});
     for(std::size_t i = 0; i < m_walls.size(); ++i) m_wall_node[i].assign(m_walls[i].size(), none);
@@ -163,8 +163,10 @@ private:
     return msg.str();
   }
 
-  // A wall vertex whose offset point the outer mesh left out (within its chord tolerance)
-  // takes the nearer of the two rays about it whose feet are not vertices.
+  // A wall vertex whose offset point the outer mesh left out takes the nearer of the two rays
+  // about it whose feet are not vertices, unless it lies on the line of its neighbours (the
+  // outer mesh leaves out an offset point exactly on its neighbours' line even with no chord
+  // tolerance): the band over it then follows the wall as well.
   void give_every_vertex_a_ray(std::size_t i, std::vector<Ray>& rays) const
   {
     const Wall_offset& w = m_walls[i];
@@ -172,7 +174,7 @@ private:
     for(const Ray& r : rays)
       if(r.at_vertex()) has[r.k] = 1;
     for(std::size_t k = 0; k < w.size(); ++k) {
-      if(has[k] != 0) continue;
+      if(has[k] != 0 || CGAL::orientation(w.wall[w.prev(k)], w.wall[k], w.wall[w.next(k)]) == COLLINEAR) continue;
       // the rays before and after vertex k: the last on edge prev(k) and the first on edge k
       std::size_t before = none, after = none;
       for(std::size_t j = 0; j < rays.size(); ++j) {
@@ -275,9 +277,9 @@ private:
   // The first layer's kite (v, b, m, a) of a fan: m moves onto the bisector of the kite's
   // tip, at the mean of a's and b's distances from v over the cosine of half the tip (where
   // a and b are as far from v, the kite's sides meet their rays at right angles and its
-  // angles are its tip's, 90°, 180° minus its tip's and 90°), unless that would fold one of
-  // the quads `around` (those at m: the fan's, from index `first_quad` on).
-  static void square_the_kite(const std::array<std::size_t, 4>& kite, std::size_t first_quad, Mesh& mesh)
+  // angles are its tip's, 90°, 180° minus its tip's and 90°), or as far towards there as
+  // better_at() allows (with one layer, m is the outer mesh's node, whose quads count too).
+  void square_the_kite(const std::array<std::size_t, 4>& kite, std::size_t first_quad, Mesh& mesh) const
   {
     auto at = [&](std::size_t v) { return to_point_2d(mesh.points[v]); };
     const Point_2d v = at(kite[0]), pb = at(kite[1]), pa = at(kite[3]);
@@ -287,119 +289,161 @@ private:
     const double radius = (length_2d(pa - v) + length_2d(pb - v)) / 2 / std::cos(half_tip);
     const Point_2d x = v + normalized_2d(ua + ub) * radius;
     const std::size_t m = kite[2];
+    const Point_2d from = at(m);
+    // all the way there, else as far as the outer mesh's quads at m allow
+    for(double step = 1; step >= 1.0 / 64; step /= 2) {
+      const Point_2d to = along_2d(from, x, step);
+      if(better_at(m, to, first_quad, mesh)) {
+        mesh.points[m] = Point_2(to.x(), to.y());
+        return;
+      }
+    }
+  }
+
+  // whether node m at `to` keeps the quads at it (from index `first_quad` on) convex, those of
+  // the outer mesh within [45°, 135°], and brings the worst nearer to right angles
+  bool better_at(std::size_t m, const Point_2d& to, std::size_t first_quad, const Mesh& mesh) const
+  {
+    double before = 0, after = 0; // the worst angle's distance from 90° in the quads at m
     for(std::size_t q = first_quad; q < mesh.quads.size(); ++q) {
-      std::array<Point_2d, 4> p;
+      std::array<Point_2d, 4> p, moved;
       bool at_m = false;
       for(int c = 0; c < 4; ++c) {
         at_m = at_m || mesh.quads[q][c] == m;
-        p[c] = mesh.quads[q][c] == m ? x : at(mesh.quads[q][c]);
+        p[c] = to_point_2d(mesh.points[mesh.quads[q][c]]);
+        moved[c] = mesh.quads[q][c] == m ? to : p[c];
       }
-      if(at_m && !strictly_convex(p)) return;
+      if(!at_m) continue;
+      if(!strictly_convex(moved)) return false;
+      if(q < m_outer_quads && quad_max_angle_deviation(moved) > 45 + 1e-9) return false;
+      before = (std::max)(before, quad_max_angle_deviation(p));
+      after = (std::max)(after, quad_max_angle_deviation(moved));
     }
-    mesh.points[m] = Point_2(x.x(), x.y());
+    return after < before;
   }
 
-  // How many edges a fan of `M` edges turning by `turn` radians has at each ring (index 1 to
-  // the layers; ring 0 is its tip): all M where the first ring's kites over them have tips of
-  // 45° at least; else kites over the first ring with tips near 90°, then towards the offset
-  // three rays for one, in as many 1-to-3 steps as fit, on the ring where the cell of each
-  // step is about square (the quadtree's template keeps its angles in [45°, 135°] there).
-  std::vector<std::size_t> fan_counts(std::size_t M, double turn) const
+  // A fan's rays `rays[0..M]` about one wall vertex (counterclockwise from the last), their
+  // angles from the first, and their nodes by ring, made as they are needed.
+  struct Fan
   {
-    const std::size_t layers = m_f.size() - 1;
-    std::vector<std::size_t> c(layers + 1, M);
-    const double pi = 3.14159265358979323846;
-    const std::size_t first = (std::min)(M, (std::max)(std::size_t(2), 2 * std::size_t(std::lround(turn / (pi / 2)))));
-    if(M <= 2 * first) // kites with tips of 45° at least without transitions
-      return c;
-    std::size_t cap = first;
-    std::vector<std::size_t> caps(layers + 1, M);
-    for(std::size_t j = 1; j <= layers; ++j, cap = cap > M / 3 ? M : cap * 3) caps[j] = (std::min)(cap, M);
-    for(std::size_t j = layers - 1; j >= 1; --j) {
-      const std::size_t above = c[j + 1];
-      const std::size_t most = (std::min)(above / 3, (above - first) / 2);
-      // a 1-to-3 step where the cell it makes below (three cells wide) is about square
-      const double width_over_height = 3 * turn * m_f[j] / (double(above) * (m_f[j + 1] - m_f[j]));
-      std::size_t blocks = width_over_height <= 1.3 ? most : 0;
-      if(above > caps[j]) blocks = (std::max)(blocks, (std::min)(above / 3, (above - caps[j] + 1) / 2));
-      c[j] = above - 2 * blocks;
-    }
-    return c;
+    std::size_t wall, v;
+    std::vector<Ray> rays;
+    std::vector<double> angle;
+    std::vector<std::vector<std::size_t>> nodes;
+  };
+
+  std::size_t fan_node(Fan& fan, std::size_t a, std::size_t j, Mesh& mesh)
+  {
+    std::size_t& id = fan.nodes[a][j];
+    if(id == none) id = add_point(along_ray(fan.wall, fan.rays[a], mesh, m_f[j]), mesh);
+    return id;
   }
 
-  // the rays of ring j of a fan (indices into its rays) from those of ring j + 1: `blocks`
-  // runs of three edges, spread evenly, lose their two inner rays
-  static std::vector<std::size_t> fewer_rays(const std::vector<std::size_t>& above, std::size_t blocks)
+  // how many levels of 1-to-3 steps a run of g edges (odd) needs from one edge
+  static std::size_t levels(std::size_t g)
   {
-    if(blocks == 0) return above;
-    const std::size_t edges = above.size() - 1;
-    std::vector<char> drop(above.size(), 0);
-    const double step = double(edges) / blocks;
-    for(std::size_t b = 0; b < blocks; ++b) {
-      const std::size_t s = (std::min)(edges - 3, std::size_t(b * step + (step - 3) / 2));
-      drop[s + 1] = drop[s + 2] = 1;
+    std::size_t n = 0;
+    for(std::size_t reach = 1; reach < g; reach *= 3) ++n;
+    return n;
+  }
+
+  // The ray after `from`, at least one edge and an odd number of them on, nearest to angle
+  // `target`, leaving `rest` edges up to `to` that `gaps` odd runs of at most `most` edges
+  // each can take.
+  static std::size_t odd_step(const Fan& fan, std::size_t from, std::size_t to, double target, std::size_t gaps,
+                              std::size_t most)
+  {
+    std::size_t best = none;
+    for(std::size_t p = from + 1; p < to; p += 2) {
+      const std::size_t rest = to - p;
+      if(rest < gaps || (rest - gaps) % 2 != 0 || rest > gaps * most || p - from > most) continue;
+      if(best == none || std::abs(fan.angle[p] - target) < std::abs(fan.angle[best] - target)) best = p;
     }
-    std::vector<std::size_t> kept;
-    for(std::size_t i = 0; i < above.size(); ++i)
-      if(drop[i] == 0) kept.push_back(above[i]);
-    return kept;
+    CGAL_assertion(best != none); // the callers leave room: an odd run of one edge at least
+    return best == none ? from + 1 : best;
+  }
+
+  // The quads between rays lo and hi from ring `low` on, whose odd number of edges at the
+  // offset the quadtree's 1-to-3 template reaches step by step: one cell up to the ring where
+  // it is as wide as tall (or the last that leaves enough rings), there the template (a cell
+  // below three, two inner nodes), then each third likewise.
+  void fan_gap(Fan& fan, std::size_t lo, std::size_t hi, std::size_t low, Mesh& mesh)
+  {
+    const std::size_t layers = m_f.size() - 1, g = hi - lo;
+    std::size_t split = layers;
+    if(g > 1) {
+      const std::size_t latest = layers - levels(g);
+      const double span = fan.angle[hi] - fan.angle[lo];
+      split = latest;
+      for(std::size_t j = low; j < latest; ++j)
+        if(span * m_f[j] >= m_f[j + 1] - m_f[j]) { split = j; break; }
+    }
+    for(std::size_t j = low; j < split; ++j)
+      mesh.quads.push_back({ { fan_node(fan, lo, j, mesh), fan_node(fan, hi, j, mesh), fan_node(fan, hi, j + 1, mesh),
+                               fan_node(fan, lo, j + 1, mesh) } });
+    if(g == 1) return;
+    const std::size_t most = std::size_t(std::pow(3.0, double(layers - split - 1)) + 0.5);
+    const double third = (fan.angle[hi] - fan.angle[lo]) / 3;
+    const std::size_t p = odd_step(fan, lo, hi, fan.angle[lo] + third, 2, most);
+    const std::size_t q = odd_step(fan, p, hi, fan.angle[hi] - third, 1, most);
+    const std::size_t j = split;
+    // the two inner nodes a third of the cell's width up (45° at its lower corners), between a
+    // third and 0.6 of its height
+    const double width_over_height = (fan.angle[hi] - fan.angle[lo]) * m_f[j] / (m_f[j + 1] - m_f[j]);
+    const double up = (std::min)(0.6, (std::max)(1.0 / 3, width_over_height / 3));
+    const double f = m_f[j] + (m_f[j + 1] - m_f[j]) * up;
+    const std::size_t pm = add_point(along_ray(fan.wall, fan.rays[p], mesh, f), mesh);
+    const std::size_t qm = add_point(along_ray(fan.wall, fan.rays[q], mesh, f), mesh);
+    const std::size_t a = fan_node(fan, lo, j, mesh), c = fan_node(fan, hi, j, mesh);
+    mesh.quads.push_back({ { a, c, qm, pm } });
+    mesh.quads.push_back({ { a, pm, fan_node(fan, p, j + 1, mesh), fan_node(fan, lo, j + 1, mesh) } });
+    mesh.quads.push_back({ { pm, qm, fan_node(fan, q, j + 1, mesh), fan_node(fan, p, j + 1, mesh) } });
+    mesh.quads.push_back({ { qm, c, fan_node(fan, hi, j + 1, mesh), fan_node(fan, q, j + 1, mesh) } });
+    fan_gap(fan, lo, p, j + 1, mesh);
+    fan_gap(fan, p, q, j + 1, mesh);
+    fan_gap(fan, q, hi, j + 1, mesh);
   }
 
   // The stacks of a fan of rays `rays[0..M]` about a wall vertex (counterclockwise from the
-  // last; the end rays' nodes made with the bands beside it): kites on the first ring's rays, then ring by ring a quad between two rays that
-  // both go on, or the 1-to-3 template of the quadtree (a cell below three, two nodes a
-  // third of the way up) where two rays start.
+  // last; the end rays' nodes made with the bands beside it): kites over every two of the
+  // offset's edges where their tips are 45° at least; else on the first ring kites with tips
+  // near 90° over rays chosen by angle, each two runs of an odd number of the offset's edges,
+  // which 1-to-3 steps reach ring by ring (fan_gap()). With one layer, kites over the
+  // offset's own nodes.
   void extrude_fan(std::size_t i, const std::vector<Ray>& rays, const std::vector<std::size_t>& first,
                    const std::vector<std::size_t>& last, Mesh& mesh)
   {
-    const std::size_t v = first[0];
     const std::size_t layers = m_f.size() - 1, M = rays.size() - 1;
-    const std::vector<std::size_t> counts = layers >= 2 ? fan_counts(M, -wall_turn(m_walls[i], rays.back().k))
-                                                        : std::vector<std::size_t>(layers + 1, M);
-    std::vector<std::vector<std::size_t>> ring(layers + 1); // the rays of each ring, in order
-    for(std::size_t a = 0; a <= M; ++a) ring[layers].push_back(a);
-    for(std::size_t j = layers - 1; j >= 1; --j)
-      ring[j] = fewer_rays(ring[j + 1], (counts[j + 1] - counts[j]) / 2);
-    ring[0] = ring[1];
-    std::vector<std::size_t> low(M + 1, layers);
-    for(std::size_t j = layers; j >= 1; --j)
-      for(std::size_t a : ring[j]) low[a] = j;
-    std::vector<std::vector<std::size_t>> nodes(M + 1);
-    nodes[0] = first;
-    nodes[M] = last;
-    for(std::size_t a = 1; a < M; ++a) nodes[a] = ray_nodes(i, rays[a], mesh, low[a]);
-    const std::size_t first_quad = mesh.quads.size();
-    for(std::size_t j = 1; j < layers; ++j) fan_ring(i, rays, ring[j], ring[j + 1], j, nodes, mesh);
-    const std::vector<std::size_t>& r1 = ring[1];
-    for(std::size_t e = 0; e + 2 < r1.size(); e += 2)
-      mesh.quads.push_back({ { v, nodes[r1[e + 2]][1], nodes[r1[e + 1]][1], nodes[r1[e]][1] } });
-    if(layers >= 2) // the kites' middles are inner nodes
-      for(std::size_t q = mesh.quads.size() - (r1.size() - 1) / 2; q < mesh.quads.size(); ++q)
-        square_the_kite(mesh.quads[q], first_quad, mesh);
-  }
-
-  // the quads between ring j of a fan and ring j + 1
-  void fan_ring(std::size_t i, const std::vector<Ray>& rays, const std::vector<std::size_t>& lower,
-                const std::vector<std::size_t>& upper, std::size_t j, std::vector<std::vector<std::size_t>>& nodes,
-                Mesh& mesh)
-  {
-    std::size_t u = 0;
-    for(std::size_t e = 0; e + 1 < lower.size(); ++e) {
-      const std::size_t a = lower[e], c = lower[e + 1];
-      while(upper[u] != a) ++u;
-      if(upper[u + 1] == c) {
-        mesh.quads.push_back({ { nodes[a][j], nodes[c][j], nodes[c][j + 1], nodes[a][j + 1] } });
-        continue;
-      }
-      const std::size_t p = upper[u + 1], q = upper[u + 2];
-      const double f = m_f[j] + (m_f[j + 1] - m_f[j]) / 3;
-      const std::size_t pm = add_point(along_ray(i, rays[p], mesh, f), mesh);
-      const std::size_t qm = add_point(along_ray(i, rays[q], mesh, f), mesh);
-      mesh.quads.push_back({ { nodes[a][j], nodes[c][j], qm, pm } });
-      mesh.quads.push_back({ { nodes[a][j], pm, nodes[p][j + 1], nodes[a][j + 1] } });
-      mesh.quads.push_back({ { pm, qm, nodes[q][j + 1], nodes[p][j + 1] } });
-      mesh.quads.push_back({ { qm, nodes[c][j], nodes[c][j + 1], nodes[q][j + 1] } });
+    Fan fan{ i, first[0], rays, { 0.0 }, std::vector<std::vector<std::size_t>>(M + 1, std::vector<std::size_t>(layers + 1, none)) };
+    for(std::size_t a = 1; a <= M; ++a) {
+      const Vector_2d u = to_point_2d(mesh.points[rays[a - 1].node]) - m_walls[i].wall[rays[a].k];
+      const Vector_2d w = to_point_2d(mesh.points[rays[a].node]) - m_walls[i].wall[rays[a].k];
+      fan.angle.push_back(fan.angle.back() + std::abs(std::atan2(CGAL::determinant(u, w), CGAL::scalar_product(u, w))));
     }
+    fan.nodes[0] = first;
+    fan.nodes[M] = last;
+    for(std::size_t a = 1; a < M; ++a) fan.nodes[a].back() = rays[a].node;
+    // the first ring's rays: 2 round(turn / 90°) runs, none longer than the rings can reach
+    const double pi = 3.14159265358979323846;
+    const std::size_t most = layers == 1 ? 1 : std::size_t(std::pow(3.0, double((std::min)(layers - 1, std::size_t(20)))) + 0.5);
+    std::size_t runs = (std::max)(std::size_t(2), 2 * std::size_t(std::lround(fan.angle.back() / (pi / 2))));
+    if(double(M) * pi / 8 <= fan.angle.back() + 1e-9) runs = M; // kites over every edge, with tips of 45° at least
+    while(runs * most < M) runs += 2;
+    runs = (std::min)(runs, M);
+    std::vector<std::size_t> ring1{ 0 };
+    for(std::size_t r = 1; r < runs; ++r)
+      ring1.push_back(odd_step(fan, ring1.back(), M, fan.angle.back() * r / runs, runs - r, most));
+    ring1.push_back(M);
+    const std::size_t first_quad = mesh.quads.size();
+    for(std::size_t r = 0; r + 1 < ring1.size(); ++r)
+      fan_gap(fan, ring1[r], ring1[r + 1], 1, mesh);
+    const std::size_t v = fan.v, top = layers >= 2 ? 1 : layers;
+    for(std::size_t r = 0; r + 2 < ring1.size(); r += 2)
+      mesh.quads.push_back({ { v, fan_node(fan, ring1[r + 2], top, mesh), fan_node(fan, ring1[r + 1], top, mesh),
+                               fan_node(fan, ring1[r], top, mesh) } });
+    // with one layer the kites' middles are the outer mesh's nodes, whose quads count too
+    for(std::size_t q = mesh.quads.size() - runs / 2; q < mesh.quads.size(); ++q)
+      square_the_kite(mesh.quads[q], layers >= 2 ? first_quad : 0, mesh);
   }
 
   // the quads of wall i's stacks, counterclockwise: a band between each two rays with
@@ -450,6 +494,7 @@ private:
   const std::vector<Wall_offset>& m_walls;
   std::vector<double> m_f;
   std::vector<std::vector<std::size_t>> m_wall_node; // by wall and vertex: its mesh node
+  std::size_t m_outer_quads = 0;                     // the outer mesh's, first in the result
 };
 
 } // namespace internal

@@ -10,10 +10,8 @@
 // A wall vertex turning the domain's boundary by at most 45 degrees outward (or any angle
 // inward) is offset along its angle's bisector, to the point at the stack's thickness from
 // both of its edges' lines (a mitre). A vertex turning outward by more (a trailing edge, a
-// reflex corner of the domain) is offset by an arc of 2 ceil(turn / 90°) steps around it,
-// its odd points pushed out to 1/cos(step) of the radius: the rays to those points then meet
-// the arc's chords at right angles, so that a fan of quads around the corner keeps its
-// angles in [45°, 135°] (Fig. 9(a) generalised).
+// reflex corner of the domain) is offset by a circular arc of 2 ceil(turn / 90°) steps
+// around it, whose rays become a fan of quads around the corner (Fig. 9(a) generalised).
 
 #ifndef CGAL_QUAD_MESHER_2_INTERNAL_BOUNDARY_LAYER_OFFSET_H
 #define CGAL_QUAD_MESHER_2_INTERNAL_BOUNDARY_LAYER_OFFSET_H
@@ -88,7 +86,7 @@ inline std::vector<Point_2d> wall_vertex_offset(const Wall_offset& w, std::size_
   const double step = turn / steps;
   std::vector<Point_2d> arc;
   for(int i = 0; i <= steps; ++i)
-    arc.push_back(v + turned_2d(n_in, step * i) * (i % 2 == 1 ? t / std::cos(step) : t));
+    arc.push_back(v + turned_2d(n_in, step * i) * t);
   return arc;
 }
 
@@ -141,9 +139,10 @@ template <class K>
 class Wall_offsetter
 {
 public:
+  /// `first_fraction`: the first layer's height over the stack's thickness
   Wall_offsetter(const Domain_2<K>& domain, const Domain_loops_2<K>& loops, std::vector<Wall_offset>& walls,
-                 double thickness)
-    : m_domain(domain), m_loops(loops), m_walls(walls), m_T(thickness)
+                 double thickness, double first_fraction)
+    : m_domain(domain), m_loops(loops), m_walls(walls), m_T(thickness), m_first_fraction(first_fraction)
   {
     for(std::size_t l = 0; l < loops.loops.size(); ++l) {
       const auto& lv = loops.loops[l].vertices;
@@ -154,6 +153,9 @@ public:
       }
     }
     m_edge_tree = std::make_unique<Box_tree>(m_edge_boxes);
+    Bbox_2 box = m_edge_boxes.empty() ? Bbox_2() : m_edge_boxes.front();
+    for(const Bbox_2& b : m_edge_boxes) box += b;
+    m_diagonal = std::hypot(box.xmax() - box.xmin(), box.ymax() - box.ymin());
   }
 
   /// at most this many halvings before a stack is reported as unable to fit
@@ -169,6 +171,7 @@ public:
         w.thickness[k] = (std::min)(m_T, facing_distance(w, k) / 3);
       grade(w);
     }
+    check_first_layers();
     for(int round = 0;; ++round) {
       offset_all();
       const std::vector<std::vector<char>> thin = crossings();
@@ -181,6 +184,7 @@ public:
           if(thin[i][k] != 0) m_walls[i].thickness[k] /= 2;
         grade(m_walls[i]);
       }
+      check_first_layers();
     }
   }
 
@@ -309,6 +313,17 @@ private:
         mark(p[a]);
         mark(p[b]);
       });
+    // each wall edge's stack, from its vertices' rays, must be a convex quad: its bands are
+    // cut from it
+    for(std::size_t i = 0; i < m_walls.size(); ++i) {
+      const Wall_offset& w = m_walls[i];
+      for(std::size_t k = 0; k < w.size(); ++k) {
+        const Point_2d q[4] = { w.wall[k], w.wall[w.next(k)], w.offset[w.next(k)].front(), w.offset[k].back() };
+        for(int c = 0; c < 4; ++c)
+          if(CGAL::orientation(q[c], q[(c + 1) % 4], q[(c + 2) % 4]) != LEFT_TURN)
+            thin[i][k] = thin[i][w.next(k)] = 1;
+      }
+    }
     for(std::size_t v : m_loops.isolated_points) {
       const Point_2d x = to_point_2d(m_domain.points[v]);
       for(std::size_t i = 0; i < m_walls.size(); ++i)
@@ -324,6 +339,24 @@ private:
     std::vector<Point_2d> poly = { w.wall[k], w.wall[w.next(k)], w.offset[w.next(k)].front() };
     for(auto it = w.offset[k].rbegin(); it != w.offset[k].rend(); ++it) poly.push_back(*it);
     return CGAL::bounded_side_2(poly.begin(), poly.end(), x, Approximate_kernel()) != ON_UNBOUNDED_SIDE;
+  }
+
+  // A first layer under 1e-8 of the domain's diagonal would put vertices closer than the
+  // whole-mesh check tells apart (1e-9 of it): an error naming the place, not a bad mesh.
+  void check_first_layers() const
+  {
+    const double least = 1e-8 * m_diagonal;
+    for(const Wall_offset& w : m_walls)
+      for(std::size_t k = 0; k < w.size(); ++k)
+        if(w.thickness[k] * m_first_fraction < least) {
+          std::ostringstream msg;
+          msg << "boundary layers: at (" << w.wall[k].x() << ", " << w.wall[k].y() << ") (input point "
+              << m_domain.point_label(w.vertices[k]) << ") the stack must be thinned to " << w.thickness[k]
+              << " (of " << m_T << ") to fit beside the boundary it faces, which makes its first layer "
+              << w.thickness[k] * m_first_fraction << " thick, under 1e-8 of the domain's diagonal; "
+              << "use fewer layers, a smaller growth or a thinner stack";
+          throw Meshing_error(msg.str());
+        }
   }
 
   std::string no_fit_message(const std::vector<std::vector<char>>& thin) const
@@ -351,6 +384,8 @@ private:
   const Domain_loops_2<K>& m_loops;
   std::vector<Wall_offset>& m_walls;
   double m_T;
+  double m_first_fraction;
+  double m_diagonal = 0; // of the input's loops
   std::vector<Edge> m_edges; // the input's, by loop
   std::vector<Bbox_2> m_edge_boxes;
   std::unique_ptr<Box_tree> m_edge_tree;
