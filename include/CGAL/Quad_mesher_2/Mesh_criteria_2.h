@@ -77,7 +77,8 @@ public:
   void set_max_cells(std::size_t n) { m_max_cells = n; }
   /// With segments in the input: how far from a loop vertex that turns the boundary by less
   /// than 20° the mesh's boundary may pass where it leaves the vertex out, as a fraction of
-  /// the domain's diagonal (default 1e-3); 0 keeps every loop vertex a mesh vertex.
+  /// the domain's diagonal (default 1e-3); 0 keeps every loop vertex a mesh vertex but those
+  /// exactly on the line between the mesh vertices beside them.
   double chord_tolerance() const { return m_chord_tolerance; }
   void set_chord_tolerance(double t)
   {

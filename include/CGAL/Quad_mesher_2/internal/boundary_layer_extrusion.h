@@ -111,10 +111,12 @@ private:
         }
     const Loop_locator locator(polylines);
     const double tolerance = 1e-9 * locator.diagonal();
-    std::vector<std::size_t> wall_of(mesh.points.size(), none - 1); // none - 1: not located yet
+    std::vector<std::size_t> wall_of(mesh.points.size(), none); // none: on no offset
+    std::vector<char> located(mesh.points.size(), 0);
     std::vector<Ray> foot(mesh.points.size());
     auto locate = [&](std::size_t v) {
-      if(wall_of[v] != none - 1) return wall_of[v];
+      if(located[v] != 0) return wall_of[v];
+      located[v] = 1;
       const Loop_locator::Hit h = locator.closest(to_point_2d(mesh.points[v]), tolerance);
       wall_of[v] = h.dist <= tolerance ? h.loop : none;
       if(wall_of[v] != none) foot[v] = foot_of(h, owner[h.loop], v);

@@ -194,7 +194,8 @@ private:
   struct Piece
   {
     Segment_2d s;
-    std::size_t wall, k0, k1; // wall none: an input segment
+    std::size_t wall, k0, k1; // wall none: an input segment of no wall
+    bool input;               // input segments meet none of their own (extract_loops() checked)
   };
   static constexpr std::size_t none = std::size_t(-1);
 
@@ -256,19 +257,15 @@ private:
     std::vector<Piece> p;
     std::vector<std::size_t> wall_of_loop(m_loops.loops.size(), none);
     for(std::size_t i = 0; i < m_walls.size(); ++i) wall_of_loop[m_walls[i].loop] = i;
-    for(std::size_t l = 0; l < m_loops.loops.size(); ++l) {
-      const auto& lv = m_loops.loops[l].vertices;
-      for(std::size_t e = 0; e < lv.size(); ++e)
-        p.push_back({ Segment_2d(to_point_2d(m_domain.points[lv[e]]), to_point_2d(m_domain.points[lv[(e + 1) % lv.size()]])),
-                      wall_of_loop[l], e, (e + 1) % lv.size() });
-    }
+    for(const Edge& e : m_edges)
+      p.push_back({ e.s, wall_of_loop[e.loop], e.e, (e.e + 1) % m_loops.loops[e.loop].vertices.size(), true });
     for(std::size_t i = 0; i < m_walls.size(); ++i) {
       const Wall_offset& w = m_walls[i];
       for(std::size_t k = 0; k < w.size(); ++k) {
         const auto& o = w.offset[k];
-        for(const Point_2d& q : o) p.push_back({ Segment_2d(w.wall[k], q), i, k, k });
-        for(std::size_t a = 0; a + 1 < o.size(); ++a) p.push_back({ Segment_2d(o[a], o[a + 1]), i, k, k });
-        p.push_back({ Segment_2d(o.back(), w.offset[w.next(k)].front()), i, k, w.next(k) });
+        for(const Point_2d& q : o) p.push_back({ Segment_2d(w.wall[k], q), i, k, k, false });
+        for(std::size_t a = 0; a + 1 < o.size(); ++a) p.push_back({ Segment_2d(o[a], o[a + 1]), i, k, k, false });
+        p.push_back({ Segment_2d(o.back(), w.offset[w.next(k)].front()), i, k, w.next(k), false });
       }
     }
     return p;
@@ -308,7 +305,7 @@ private:
     };
     for(std::size_t a = 0; a < p.size(); ++a)
       tree.query(boxes[a], [&](std::size_t b) {
-        if(b <= a || (p[a].wall == none && p[b].wall == none)) return;
+        if(b <= a || (p[a].input && p[b].input)) return;
         if(!meet(p[a].s, p[b].s)) return;
         mark(p[a]);
         mark(p[b]);
