@@ -11,6 +11,7 @@
 #include "qm2_test_kernel.h"
 
 #include <CGAL/Quad_mesher_2/Boundary_layer_mesher_2.h>
+#include <CGAL/Quad_mesher_2/IO/read_poly.h>
 
 #include <gtest/gtest.h>
 
@@ -189,6 +190,34 @@ TEST(Boundary_layers, a_slot_narrower_than_two_stacks_is_thinned_not_overlapped)
   EXPECT_LE(thinnest * layers.thickness(), 0.01 / 3 + 1e-9); // a third of the gap at most
   EXPECT_GE(l.report.outer_min_angle, 45 - 1e-6);
   EXPECT_LE(l.report.outer_max_angle, 135 + 1e-6);
+}
+
+// The cases: 20 layers from 1e-4 at 1.15 on the shared NACA 0012 (a 341° trailing
+// edge) and 30P-30N (cusps of 352°, a slot thinner than two stacks). The slat cusp's fan
+// runs over rays the outer mesh crowds at one end; before the stacks were smoothed its
+// 1-to-3 steps there made angles of 11° and 169°.
+TEST(Boundary_layers, the_shared_air_foils_keep_every_layer_angle_within_22_5_and_157_5)
+{
+  const std::pair<const char*, std::vector<int>> cases[] = { { "/naca0012/naca0012_sharp.poly", { 2 } },
+                                                             { "/airfoil_30p30n/airfoil_30p30n.poly", { 2, 3, 4 } } };
+  for(const auto& [file, walls] : cases) {
+    QM::Domain_2<K> d;
+    std::string error;
+    ASSERT_TRUE(QM::IO::read_poly(std::string(QM2_SHARED_DATA_DIR) + file, d, &error)) << file << ": " << error;
+    const Layered l = mesh_with_layers(d, 20, 1e-4, 1.15, walls);
+    EXPECT_TRUE(qm2_checks::is_conforming(l.mesh)) << file;
+    EXPECT_TRUE(QM::compute_quality(l.mesh).is_valid()) << file;
+    EXPECT_GE(l.report.layer_min_angle, 22.5) << file;
+    EXPECT_LE(l.report.layer_max_angle, 157.5) << file;
+    EXPECT_GE(l.report.outer_min_angle, 45 - 1e-6) << file;
+    EXPECT_LE(l.report.outer_max_angle, 135 + 1e-6) << file;
+    for(const auto& w : l.report.walls) {
+      EXPECT_NEAR(w.first_height_min, 1e-4, 1e-6) << file << " marker " << w.marker;
+      EXPECT_NEAR(w.first_height_max, 1e-4, 1e-6) << file << " marker " << w.marker;
+      EXPECT_NEAR(w.growth_min, 1.15, 0.02 * 1.15) << file << " marker " << w.marker;
+      EXPECT_NEAR(w.growth_max, 1.15, 0.02 * 1.15) << file << " marker " << w.marker;
+    }
+  }
 }
 
 TEST(Boundary_layers, bad_values_are_clear_errors)

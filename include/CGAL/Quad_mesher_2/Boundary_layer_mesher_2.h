@@ -14,6 +14,7 @@
 #include <CGAL/Quad_mesher_2/Quadtree_mesher_2.h>
 #include <CGAL/Quad_mesher_2/internal/boundary_layer_extrusion.h>
 #include <CGAL/Quad_mesher_2/internal/boundary_layer_offset.h>
+#include <CGAL/Quad_mesher_2/internal/boundary_layer_smoothing.h>
 #include <CGAL/Quad_mesher_2/internal/boundary_markers.h>
 #include <CGAL/Quad_mesher_2/internal/quad_geometry.h>
 
@@ -116,6 +117,7 @@ public:
     fractions.back() = 1;
     internal::Layer_extrusion<GeomTraits> extrusion(m_domain, m_walls, fractions);
     internal::Layer_extrusion_result<Point_2> result = extrusion.run(std::move(outer));
+    smooth_stacks(result);
     result.mesh.boundary_edges = internal::marked_boundary_edges(result.mesh, m_domain, m_loops);
     make_report(result);
     record("boundary_layers", start);
@@ -152,6 +154,26 @@ private:
     return h;
   }
 
+  // the full stack's thickness over the whole of band's wall edge: not thinned
+  bool full_thickness(const internal::Layer_band& band) const
+  {
+    const internal::Wall_offset& w = m_walls[band.wall];
+    const double thickness = (std::min)(w.thickness[band.edge], w.thickness[w.next(band.edge)]);
+    return thickness >= m_layers.thickness() * (1 - 1e-9);
+  }
+
+  // smooths the stacks' nodes off the wall, but for the rays of the bands with the stack's
+  // own heights (regular and full), which keep them exactly
+  void smooth_stacks(internal::Layer_extrusion_result<Point_2>& r) const
+  {
+    std::vector<char> movable = std::move(r.off_wall);
+    for(const internal::Layer_band& band : r.bands)
+      if(band.regular && full_thickness(band))
+        for(const auto* ray : { &band.left, &band.right })
+          for(std::size_t v : *ray) movable[v] = 0;
+    internal::Layer_smoothing<Point_2>(r.mesh, r.first_layer_quad, std::move(movable)).run();
+  }
+
   void make_report(const internal::Layer_extrusion_result<Point_2>& r)
   {
     m_report = Boundary_layer_report();
@@ -168,8 +190,8 @@ private:
       ++s.bands;
       const internal::Point_2d a = w.wall[band.edge], b = w.wall[w.next(band.edge)];
       const std::vector<double> hl = heights(r.mesh, band.left, a, b), hr = heights(r.mesh, band.right, a, b);
-      const double thickness = (std::min)(w.thickness[band.edge], w.thickness[w.next(band.edge)]);
-      if(thickness < T * (1 - 1e-9)) {
+      if(!full_thickness(band)) {
+        const double thickness = (std::min)(w.thickness[band.edge], w.thickness[w.next(band.edge)]);
         ++s.thinned_bands;
         if(thickness / T < s.thinnest_ratio) {
           s.thinnest_ratio = thickness / T;

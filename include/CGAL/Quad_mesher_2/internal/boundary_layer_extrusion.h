@@ -22,6 +22,7 @@
 #include <CGAL/Quad_mesher_2/internal/boundary_layer_offset.h>
 #include <CGAL/Quad_mesher_2/internal/loop_locator.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <sstream>
@@ -48,6 +49,7 @@ struct Layer_extrusion_result
   std::size_t first_layer_quad = 0; // the stacks' quads follow the outer mesh's
   std::vector<Layer_band> bands;
   std::vector<std::size_t> fans;    // by wall: fans of rays around a wall vertex
+  std::vector<char> off_wall;       // by node: whether a stack node off the wall (not the outer mesh's)
 };
 
 template <class K>
@@ -70,6 +72,7 @@ public:
     Layer_extrusion_result<Point_2> r;
     r.mesh = std::move(outer);
     r.first_layer_quad = m_outer_quads = r.mesh.quads.size();
+    m_outer_points = r.mesh.points.size();
     r.fans.assign(m_walls.size(), 0);
     m_wall_node.assign(m_walls.size(), {});
     for(std::size_t i = 0; i < m_walls.size(); ++i) m_wall_node[i].assign(m_walls[i].size(), none);
@@ -80,6 +83,9 @@ public:
       r.fans[i] = pair_fans(i, rays);
       extrude(i, rays, r);
     }
+    r.off_wall.assign(r.mesh.points.size(), 1);
+    std::fill(r.off_wall.begin(), r.off_wall.begin() + std::ptrdiff_t(m_outer_points), 0);
+    for(std::size_t v : m_wall_nodes) r.off_wall[v] = 0;
     return r;
   }
 
@@ -231,6 +237,7 @@ private:
     if(id == none) {
       id = mesh.points.size();
       mesh.points.push_back(m_domain.points[m_walls[i].vertices[k]]);
+      m_wall_nodes.push_back(id);
     }
     return id;
   }
@@ -248,6 +255,7 @@ private:
       const Point_2& b = m_domain.points[w.vertices[w.next(r.k)]];
       ids[0] = mesh.points.size();
       mesh.points.push_back(a + (b - a) * FT(r.s));
+      m_wall_nodes.push_back(ids[0]);
     }
     ids.back() = r.node;
     for(std::size_t j = (std::max)(low, std::size_t(1)); j + 1 < m_f.size(); ++j)
@@ -496,7 +504,8 @@ private:
   const std::vector<Wall_offset>& m_walls;
   std::vector<double> m_f;
   std::vector<std::vector<std::size_t>> m_wall_node; // by wall and vertex: its mesh node
-  std::size_t m_outer_quads = 0;                     // the outer mesh's, first in the result
+  std::size_t m_outer_quads = 0, m_outer_points = 0; // the outer mesh's, first in the result
+  std::vector<std::size_t> m_wall_nodes;             // the stacks' nodes on the wall
 };
 
 } // namespace internal

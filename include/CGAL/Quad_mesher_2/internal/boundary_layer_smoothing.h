@@ -1,0 +1,180 @@
+// Copyright (c) 2026 Quad_mesher_2 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Quad_mesher_2 developers
+//
+// The stacks' local min-max angle smoothing, after the extrusion (not in the paper, whose
+// templates place their points once). Where a stack quad has an angle outside [45°, 135°]
+// (fans over unevenly spaced rays, 1-to-3 steps between rays of unequal spacing, bands where
+// a thinned offset bends), the stack nodes around it move one at a time while that lowers
+// the worst quads at the node, compared worst first. Nodes on the wall and on the offset (the
+// outer mesh's) stay, so nothing outside the stacks changes; no move makes a quad non-convex
+// or folds the quads about a node.
+
+#ifndef CGAL_QUAD_MESHER_2_INTERNAL_BOUNDARY_LAYER_SMOOTHING_H
+#define CGAL_QUAD_MESHER_2_INTERNAL_BOUNDARY_LAYER_SMOOTHING_H
+
+#include <CGAL/Quad_mesher_2/Quad_mesh_2.h>
+#include <CGAL/Quad_mesher_2/internal/approximate_kernel.h>
+#include <CGAL/Quad_mesher_2/internal/mesh_adjacency.h>
+#include <CGAL/Quad_mesher_2/internal/quad_geometry.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <deque>
+#include <vector>
+
+namespace CGAL {
+namespace Quad_mesher_2 {
+namespace internal {
+
+template <class Point_2>
+class Layer_smoothing
+{
+public:
+  typedef Quad_mesh_2<Point_2> Mesh;
+
+  /// `movable[v]`: whether node v may move (stack nodes off the wall and the offset); the
+  /// stack quads are those from `first_quad` on
+  Layer_smoothing(Mesh& mesh, std::size_t first_quad, std::vector<char> movable)
+    : m_mesh(mesh), m_first_quad(first_quad), m_movable(std::move(movable)), m_quads_at(mesh.quads, mesh.points.size())
+  {
+    for(const Point_2& p : mesh.points) m_xy.push_back(to_point_2d(p));
+    m_floor.assign(m_xy.size(), 0);
+    for(std::size_t v = 0; v < m_xy.size(); ++v)
+      if(m_movable[v] != 0) m_floor[v] = reach(v) / 3;
+  }
+
+  /// Moves the nodes about the stack quads outside [45°, 135°] and their neighbours, each at
+  /// most `visits` times; returns how many moves were kept.
+  std::size_t run(int visits = 16)
+  {
+    std::deque<std::size_t> queue;
+    std::vector<char> queued(m_xy.size(), 0);
+    std::vector<int> visited(m_xy.size(), 0);
+    auto push = [&](std::size_t v) {
+      if(m_movable[v] != 0 && queued[v] == 0 && visited[v] < visits) {
+        queued[v] = 1;
+        queue.push_back(v);
+      }
+    };
+    for(std::size_t q = m_first_quad; q < m_mesh.quads.size(); ++q)
+      if(badness(q) > 45)
+        for(std::size_t v : m_mesh.quads[q]) push_with_neighbours(v, push);
+    std::size_t moves = 0;
+    while(!queue.empty()) {
+      const std::size_t v = queue.front();
+      queue.pop_front();
+      queued[v] = 0;
+      ++visited[v];
+      if(!improve(v)) continue;
+      ++moves;
+      push_with_neighbours(v, push);
+    }
+    for(std::size_t v = 0; v < m_xy.size(); ++v)
+      if(m_movable[v] != 0) m_mesh.points[v] = Point_2(m_xy[v].x(), m_xy[v].y());
+    return moves;
+  }
+
+private:
+  template <class Push>
+  void push_with_neighbours(std::size_t v, Push& push) const
+  {
+    for(std::uint32_t q : m_quads_at[v])
+      for(std::size_t u : m_mesh.quads[q]) push(u);
+  }
+
+  std::array<Point_2d, 4> corners(std::size_t q) const
+  {
+    std::array<Point_2d, 4> p;
+    for(int c = 0; c < 4; ++c) p[c] = m_xy[m_mesh.quads[q][c]];
+    return p;
+  }
+
+  double badness(std::size_t q) const { return quad_badness(corners(q)); }
+
+  // the shortest distance from v to another corner of its quads
+  double reach(std::size_t v) const
+  {
+    double d = HUGE_VAL;
+    for(std::uint32_t q : m_quads_at[v])
+      for(std::size_t u : m_mesh.quads[q])
+        if(u != v) d = (std::min)(d, length_2d(m_xy[u] - m_xy[v]));
+    return d;
+  }
+
+  // the badness of the quads at v, worst first; empty if they fold about v or v comes
+  // nearer than `floor` to one of their corners
+  std::vector<double> local(std::size_t v, double floor = 0) const
+  {
+    std::vector<double> b;
+    double turn = 0;
+    for(std::uint32_t q : m_quads_at[v]) {
+      const std::array<Point_2d, 4> p = corners(q);
+      const int c = corner_of(m_mesh.quads[q], v);
+      for(int k = 1; k < 4; ++k)
+        if(length_2d(p[(c + k) % 4] - p[c]) < floor) return {};
+      b.push_back(quad_badness(p));
+      turn += corner_angle_degrees(p[(c + 3) % 4], p[c], p[(c + 1) % 4]);
+    }
+    if(std::abs(turn - 360) > 1) return {}; // folded, or v is not inside the mesh
+    std::sort(b.begin(), b.end(), [](double x, double y) { return x > y; });
+    return b;
+  }
+
+  // whether the worst-first list `a` is better than `b` by more than rounding
+  static bool better(const std::vector<double>& a, const std::vector<double>& b)
+  {
+    if(a.empty()) return false;
+    for(std::size_t k = 0; k < a.size(); ++k)
+      if(std::abs(a[k] - b[k]) > 1e-9) return a[k] < b[k];
+    return false;
+  }
+
+  // A pattern search: the best of eight directions at a step from half the distance to
+  // v's nearest quad corner down to 1/1024 of it, kept while it betters the quads at v and
+  // keeps v from coming nearer to their corners than a third of that distance at the start
+  // (a worst-first order alone would collapse edges: a short edge can have good angles).
+  bool improve(std::size_t v)
+  {
+    const Point_2d start = m_xy[v];
+    std::vector<double> current = local(v);
+    if(current.empty() || current.front() <= 45) return false; // nothing to mend, or not inside
+    const double reach = this->reach(v), floor = m_floor[v];
+    const double directions[8][2] = { { 1, 0 }, { 0.70710678118654752, 0.70710678118654752 }, { 0, 1 },
+                                      { -0.70710678118654752, 0.70710678118654752 }, { -1, 0 },
+                                      { -0.70710678118654752, -0.70710678118654752 }, { 0, -1 },
+                                      { 0.70710678118654752, -0.70710678118654752 } };
+    for(double step = reach / 2, moves = 0; step > reach / 1024 && moves < 256; ++moves) {
+      const Point_2d from = m_xy[v];
+      Point_2d best = from;
+      std::vector<double> best_local = current;
+      for(const auto& d : directions) {
+        m_xy[v] = Point_2d(from.x() + step * d[0], from.y() + step * d[1]);
+        const std::vector<double> b = local(v, floor);
+        if(better(b, best_local)) {
+          best = m_xy[v];
+          best_local = b;
+        }
+      }
+      m_xy[v] = best;
+      if(best_local == current) step /= 2;
+      current = best_local;
+    }
+    return !(m_xy[v] == start);
+  }
+
+  Mesh& m_mesh;
+  std::size_t m_first_quad;
+  std::vector<char> m_movable;
+  Vertex_quads m_quads_at;
+  std::vector<Point_2d> m_xy;
+  std::vector<double> m_floor; // by node: the nearest it may come to a corner of its quads
+};
+
+} // namespace internal
+} // namespace Quad_mesher_2
+} // namespace CGAL
+
+#endif // CGAL_QUAD_MESHER_2_INTERNAL_BOUNDARY_LAYER_SMOOTHING_H
