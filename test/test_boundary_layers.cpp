@@ -192,6 +192,37 @@ TEST(Boundary_layers, a_slot_narrower_than_two_stacks_is_thinned_not_overlapped)
   EXPECT_LE(l.report.outer_max_angle, 135 + 1e-6);
 }
 
+// A notch of 8.2° into a body: the mitre of its tip lies 14 stack thicknesses up the notch.
+// Rays slanted from each wall point to the same fraction of the offset made every band along
+// the notch's sides a sliver (a random far field's 1.4° notch: 15369 quads under 22.5°);
+// with rays square to the walls only the two bands at the tip keep the tip's half angle.
+TEST(Boundary_layers, a_sharp_notch_skews_only_the_bands_at_its_tip)
+{
+  const QM::Domain_2<K> d = qm2_test::polygons(
+    { qm2_test::rectangle(-10, -10, 10, 10),
+      { Point_2(0, 0), Point_2(0, 1), Point_2(0.45, 1), Point_2(0.5, 0.3), Point_2(0.55, 1), Point_2(1, 1),
+        Point_2(1, 0) } },
+    { Point_2(0.2, 0.5) });
+  for(double h : { 1e-3, 1e-4 }) {
+    const Layered l = mesh_with_layers(d, 10, h, 1.2);
+    EXPECT_TRUE(qm2_checks::is_conforming(l.mesh)) << h;
+    EXPECT_TRUE(QM::compute_quality(l.mesh).is_valid()) << h;
+    std::size_t skewed = 0;
+    for(std::size_t q = 0; q < l.mesh.quads.size(); ++q) {
+      bool out = false;
+      for(int c = 0; c < 4; ++c) {
+        const double a = qm2_checks::corner_angle(l.mesh, q, c);
+        out = out || a < 22.5 || a > 157.5;
+      }
+      skewed += out ? 1 : 0;
+    }
+    EXPECT_LE(skewed, 2u * 10 + 2) << h;
+    // the offset's own tip keeps the notch's angle
+    EXPECT_GE(l.report.outer_min_angle, 2 * std::atan(0.05 / 0.7) * 180 / M_PI - 1e-6) << h;
+    EXPECT_LE(l.report.outer_max_angle, 135 + 1e-6) << h;
+  }
+}
+
 // The cases: 20 layers from 1e-4 at 1.15 on the shared NACA 0012 (a 341° trailing
 // edge) and 30P-30N (cusps of 352°, a slot thinner than two stacks). The slat cusp's fan
 // runs over rays the outer mesh crowds at one end; before the stacks were smoothed its

@@ -166,12 +166,12 @@ private:
   // own heights (regular and full), which keep them exactly
   void smooth_stacks(internal::Layer_extrusion_result<Point_2>& r) const
   {
-    std::vector<char> movable = std::move(r.off_wall);
+    std::vector<internal::Stack_node> nodes = std::move(r.nodes);
     for(const internal::Layer_band& band : r.bands)
       if(band.regular && full_thickness(band))
         for(const auto* ray : { &band.left, &band.right })
-          for(std::size_t v : *ray) movable[v] = 0;
-    internal::Layer_smoothing<Point_2>(r.mesh, r.first_layer_quad, std::move(movable)).run();
+          for(std::size_t v : *ray) nodes[v] = internal::Stack_node::fixed;
+    internal::Layer_smoothing<Point_2>(r.mesh, r.first_layer_quad, std::move(nodes)).run();
   }
 
   void make_report(const internal::Layer_extrusion_result<Point_2>& r)

@@ -32,6 +32,10 @@ namespace CGAL {
 namespace Quad_mesher_2 {
 namespace internal {
 
+/// A node of the mesh with stacks: the outer mesh's or on the wall, on a band's ray, or
+/// inside a fan (on its inner rays or a 1-to-3 step's)
+enum class Stack_node : char { fixed, band, fan };
+
 /// One band of stacked quads between two rays whose feet differ: along wall edge `edge` of
 /// wall `wall`, the nodes of its two rays from the wall (0) to the offset (last).
 struct Layer_band
@@ -49,7 +53,7 @@ struct Layer_extrusion_result
   std::size_t first_layer_quad = 0; // the stacks' quads follow the outer mesh's
   std::vector<Layer_band> bands;
   std::vector<std::size_t> fans;    // by wall: fans of rays around a wall vertex
-  std::vector<char> off_wall;       // by node: whether a stack node off the wall (not the outer mesh's)
+  std::vector<Stack_node> nodes;    // by node: what it is
 };
 
 template <class K>
@@ -83,9 +87,10 @@ public:
       r.fans[i] = pair_fans(i, rays);
       extrude(i, rays, r);
     }
-    r.off_wall.assign(r.mesh.points.size(), 1);
-    std::fill(r.off_wall.begin(), r.off_wall.begin() + std::ptrdiff_t(m_outer_points), 0);
-    for(std::size_t v : m_wall_nodes) r.off_wall[v] = 0;
+    r.nodes.assign(r.mesh.points.size(), Stack_node::band);
+    std::fill(r.nodes.begin(), r.nodes.begin() + std::ptrdiff_t(m_outer_points), Stack_node::fixed);
+    for(std::size_t v : m_wall_nodes) r.nodes[v] = Stack_node::fixed;
+    for(std::size_t v : m_fan_nodes) r.nodes[v] = Stack_node::fan;
     return r;
   }
 
@@ -160,7 +165,30 @@ private:
     const double snap = 1e-12;
     if(h.t <= snap) return { v, k, 0.0 };
     if(h.t >= 1 - snap) return { v, w.next(k), 0.0 };
-    return { v, k, h.t };
+    return { v, k, wall_fraction(w, k, h.t) };
+  }
+
+  // Where the node at fraction t along the offset segment of wall edge k stands on the edge:
+  // the same fraction shifted along the edge as the offset's ends are shifted from the
+  // edge's (rays turning smoothly from one end's to the other's), but for an end whose mitre
+  // lies ahead along the edge (a concave corner): there the node's own projection, whose ray
+  // is square to the wall. A sharp concave corner's mitre lies far ahead (the thickness over
+  // the sine of half its angle), and rays slanted to it all along the edge made the whole
+  // band a sliver.
+  static double wall_fraction(const Wall_offset& w, std::size_t k, double t)
+  {
+    const std::size_t k1 = w.next(k);
+    const Vector_2d edge = w.wall[k1] - w.wall[k];
+    const double length = length_2d(edge);
+    const Vector_2d e = edge / length;
+    const Point_2d& from = w.offset[k].back();
+    const Point_2d& to = w.offset[k1].front();
+    const double ahead0 = CGAL::scalar_product(from - w.wall[k], e); // > 0: ahead, concave
+    const double ahead1 = CGAL::scalar_product(w.wall[k1] - to, e);
+    if(ahead0 <= 0 && ahead1 <= 0) return t;
+    const double x0 = (std::max)(ahead0, 0.0), x1 = length - (std::max)(ahead1, 0.0);
+    if(!(x1 > x0)) return t; // the two mitres pass each other: no room to square the rays
+    return (x0 + t * (x1 - x0)) / length;
   }
 
   std::string unmeshed_offset(std::size_t i) const
@@ -345,7 +373,10 @@ private:
   std::size_t fan_node(Fan& fan, std::size_t a, std::size_t j, Mesh& mesh)
   {
     std::size_t& id = fan.nodes[a][j];
-    if(id == none) id = add_point(along_ray(fan.wall, fan.rays[a], mesh, m_f[j]), mesh);
+    if(id == none) {
+      id = add_point(along_ray(fan.wall, fan.rays[a], mesh, m_f[j]), mesh);
+      m_fan_nodes.push_back(id);
+    }
     return id;
   }
 
@@ -404,6 +435,7 @@ private:
     const double f = m_f[j] + (m_f[j + 1] - m_f[j]) * up;
     const std::size_t pm = add_point(along_ray(fan.wall, fan.rays[p], mesh, f), mesh);
     const std::size_t qm = add_point(along_ray(fan.wall, fan.rays[q], mesh, f), mesh);
+    m_fan_nodes.insert(m_fan_nodes.end(), { pm, qm });
     const std::size_t a = fan_node(fan, lo, j, mesh), c = fan_node(fan, hi, j, mesh);
     mesh.quads.push_back({ { a, c, qm, pm } });
     mesh.quads.push_back({ { a, pm, fan_node(fan, p, j + 1, mesh), fan_node(fan, lo, j + 1, mesh) } });
@@ -506,6 +538,7 @@ private:
   std::vector<std::vector<std::size_t>> m_wall_node; // by wall and vertex: its mesh node
   std::size_t m_outer_quads = 0, m_outer_points = 0; // the outer mesh's, first in the result
   std::vector<std::size_t> m_wall_nodes;             // the stacks' nodes on the wall
+  std::vector<std::size_t> m_fan_nodes;              // and inside fans
 };
 
 } // namespace internal

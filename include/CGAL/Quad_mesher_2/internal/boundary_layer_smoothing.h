@@ -15,6 +15,7 @@
 
 #include <CGAL/Quad_mesher_2/Quad_mesh_2.h>
 #include <CGAL/Quad_mesher_2/internal/approximate_kernel.h>
+#include <CGAL/Quad_mesher_2/internal/boundary_layer_extrusion.h>
 #include <CGAL/Quad_mesher_2/internal/mesh_adjacency.h>
 #include <CGAL/Quad_mesher_2/internal/quad_geometry.h>
 
@@ -23,6 +24,7 @@
 #include <cmath>
 #include <cstddef>
 #include <deque>
+#include <functional>
 #include <vector>
 
 namespace CGAL {
@@ -35,15 +37,15 @@ class Layer_smoothing
 public:
   typedef Quad_mesh_2<Point_2> Mesh;
 
-  /// `movable[v]`: whether node v may move (stack nodes off the wall and the offset); the
-  /// stack quads are those from `first_quad` on
-  Layer_smoothing(Mesh& mesh, std::size_t first_quad, std::vector<char> movable)
-    : m_mesh(mesh), m_first_quad(first_quad), m_movable(std::move(movable)), m_quads_at(mesh.quads, mesh.points.size())
+  /// `nodes[v]`: whether node v stays, or moves as a band's or a fan's; the stack quads are
+  /// those from `first_quad` on
+  Layer_smoothing(Mesh& mesh, std::size_t first_quad, std::vector<Stack_node> nodes)
+    : m_mesh(mesh), m_first_quad(first_quad), m_nodes(std::move(nodes)), m_quads_at(mesh.quads, mesh.points.size())
   {
     for(const Point_2& p : mesh.points) m_xy.push_back(to_point_2d(p));
     m_floor.assign(m_xy.size(), 0);
     for(std::size_t v = 0; v < m_xy.size(); ++v)
-      if(m_movable[v] != 0) m_floor[v] = reach(v) / 3;
+      if(m_nodes[v] != Stack_node::fixed) m_floor[v] = reach(v) / 3;
   }
 
   /// Moves the nodes about the stack quads outside [45°, 135°] and their neighbours, each at
@@ -54,7 +56,7 @@ public:
     std::vector<char> queued(m_xy.size(), 0);
     std::vector<int> visited(m_xy.size(), 0);
     auto push = [&](std::size_t v) {
-      if(m_movable[v] != 0 && queued[v] == 0 && visited[v] < visits) {
+      if(m_nodes[v] != Stack_node::fixed && queued[v] == 0 && visited[v] < visits) {
         queued[v] = 1;
         queue.push_back(v);
       }
@@ -73,7 +75,7 @@ public:
       push_with_neighbours(v, push);
     }
     for(std::size_t v = 0; v < m_xy.size(); ++v)
-      if(m_movable[v] != 0) m_mesh.points[v] = Point_2(m_xy[v].x(), m_xy[v].y());
+      if(m_nodes[v] != Stack_node::fixed) m_mesh.points[v] = Point_2(m_xy[v].x(), m_xy[v].y());
     return moves;
   }
 
@@ -104,8 +106,8 @@ private:
     return d;
   }
 
-  // the badness of the quads at v, worst first; empty if they fold about v or v comes
-  // nearer than `floor` to one of their corners
+  // the badness of the quads at v in the order of m_quads_at[v]; empty if they fold about v
+  // or v comes nearer than `floor` to one of their corners
   std::vector<double> local(std::size_t v, double floor = 0) const
   {
     std::vector<double> b;
@@ -119,16 +121,25 @@ private:
       turn += corner_angle_degrees(p[(c + 3) % 4], p[c], p[(c + 1) % 4]);
     }
     if(std::abs(turn - 360) > 1) return {}; // folded, or v is not inside the mesh
-    std::sort(b.begin(), b.end(), [](double x, double y) { return x > y; });
     return b;
   }
 
-  // whether the worst-first list `a` is better than `b` by more than rounding
-  static bool better(const std::vector<double>& a, const std::vector<double>& b)
+  // Whether the quads at a node with badness `a` are better than with `b` (same order):
+  // better worst first by more than rounding, and for a band's node, worse than 45 in no
+  // quad that was not. A fan's quads are the fan's own construction, spreading the skew
+  // among them is what mends it; a band's bad quad is forced by a sharp corner or by the
+  // thinning, and spreading its skew along the band only multiplies it.
+  static bool better(const std::vector<double>& a, const std::vector<double>& b, Stack_node node)
   {
     if(a.empty()) return false;
-    for(std::size_t k = 0; k < a.size(); ++k)
-      if(std::abs(a[k] - b[k]) > 1e-9) return a[k] < b[k];
+    if(node == Stack_node::band)
+      for(std::size_t k = 0; k < a.size(); ++k)
+        if(a[k] > 45 && a[k] > b[k]) return false;
+    std::vector<double> sa = a, sb = b;
+    std::sort(sa.begin(), sa.end(), std::greater<double>());
+    std::sort(sb.begin(), sb.end(), std::greater<double>());
+    for(std::size_t k = 0; k < sa.size(); ++k)
+      if(std::abs(sa[k] - sb[k]) > 1e-9) return sa[k] < sb[k];
     return false;
   }
 
@@ -140,7 +151,8 @@ private:
   {
     const Point_2d start = m_xy[v];
     std::vector<double> current = local(v);
-    if(current.empty() || current.front() <= 45) return false; // nothing to mend, or not inside
+    if(current.empty() || *std::max_element(current.begin(), current.end()) <= 45)
+      return false; // nothing to mend, or not inside
     const double reach = this->reach(v), floor = m_floor[v];
     const double directions[8][2] = { { 1, 0 }, { 0.70710678118654752, 0.70710678118654752 }, { 0, 1 },
                                       { -0.70710678118654752, 0.70710678118654752 }, { -1, 0 },
@@ -153,7 +165,7 @@ private:
       for(const auto& d : directions) {
         m_xy[v] = Point_2d(from.x() + step * d[0], from.y() + step * d[1]);
         const std::vector<double> b = local(v, floor);
-        if(better(b, best_local)) {
+        if(better(b, best_local, m_nodes[v])) {
           best = m_xy[v];
           best_local = b;
         }
@@ -167,7 +179,7 @@ private:
 
   Mesh& m_mesh;
   std::size_t m_first_quad;
-  std::vector<char> m_movable;
+  std::vector<Stack_node> m_nodes;
   Vertex_quads m_quads_at;
   std::vector<Point_2d> m_xy;
   std::vector<double> m_floor; // by node: the nearest it may come to a corner of its quads
