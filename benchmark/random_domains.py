@@ -2,7 +2,7 @@
 """random_domains.py -- seeded random valid domains, the inputs a user meets (issue 24).
 
 Usage:
-    random_domains.py OUT_DIR --seed S --count N [--kinds star,twoopt,convex,rectilinear]
+    random_domains.py OUT_DIR --seed S --count N [--kinds star,twoopt,convex,rectilinear] [--far-field]
 
 Writes N domains OUT_DIR/<kind>_<S>_<i>.poly (i = 0 to N-1, the kind cycling through --kinds)
 in Triangle's .poly format: 1-based, full double precision, vertex and segment marker = loop
@@ -29,6 +29,20 @@ it was made. A domain is:
 The domain is checked with shapely on its written coordinates (each loop simple, no point
 twice, the holes strictly inside the outer loop and disjoint, each hole point strictly inside
 its hole) and drawn again, from the same generator, until it passes.
+With --far-field (boundary layers, issue 25), domain i is instead a far field holding bodies,
+OUT_DIR/farfield_<kind>_<S>_<i>.poly, drawn from the same generator:
+  * 1 to 3 bodies, the holes (CW, segment markers 2, 3, 4): each an outer loop of the kind
+    above with its own random feature (a body's spike is a domain corner of 355 to 359
+    degrees, its notch one of 1 to 5 degrees), scaled to a diameter (its farthest two
+    points apart) of BODY_SIZE = 1 and turned at random; the first one about the origin,
+    each next one moved from a point inside one before it, in a random direction, until its
+    gap to those before it is 0.05 to 2 body sizes (log-uniform) -- or, in a tenth of the
+    domains (then 2 or 3 bodies), the second one's gap is 0.01 to 0.03 body sizes: a slot;
+  * the far field (CCW, marker 1): a square of side 20 to 40 body sizes, or in a quarter of
+    the domains a rectangle twice as wide, centred on the bodies' bounding box;
+  * one hole point inside each body; no scaling or move.
+It is checked, and drawn again, as above; its first line also gives the least gap between
+bodies and the domain's sharpest corner.
 Needs Debian's python3-numpy and python3-shapely; run with /usr/bin/python3.
 """
 import argparse
@@ -46,6 +60,12 @@ FEATURE_CHANCES = (0.4, 0.15, 0.15, 0.15, 0.15)
 HOLE_GAP = 0.02            # least gap between loops, times the outer loop's bbox diagonal
 MAX_OFFSET_PER_SCALE = 1e6
 MAX_ATTEMPTS = 1000
+BODY_SIZE = 1.0                  # a far field's bodies' diameter
+FAR_FIELD_SIDE = (20, 40)        # the far field's shorter side, in body sizes
+RECTANGLE_CHANCE = 0.25          # a far field twice as wide as tall
+BODY_GAP = (0.05, 2.0)           # a body's gap to those before it, in body sizes (log-uniform)
+SLOT_CHANCE = 0.1                # the second body's gap is then a narrow slot
+SLOT_GAP = (0.01, 0.03)
 
 
 def signed_area(loop):
@@ -68,6 +88,11 @@ def star_loop(rng, corners, low_radius, centre=(0.0, 0.0), radius=1.0):
     t = 2 * np.pi * (np.arange(corners) + rng.uniform(-0.4, 0.4, corners)) / corners
     r = radius * rng.uniform(low_radius, 1.0, corners)
     return counter_clockwise(np.column_stack([centre[0] + r * np.cos(t), centre[1] + r * np.sin(t)]))
+
+
+def turned(loop, turn):
+    c, s = np.cos(turn), np.sin(turn)
+    return loop @ np.array([[c, s], [-s, c]])
 
 
 def edges_crossing(points, i):
@@ -117,9 +142,7 @@ def convex_loop(rng, corners):
                              rng.permutation(valtr_steps(rng, rng.random(corners)))])
     steps = steps[np.argsort(np.arctan2(steps[:, 1], steps[:, 0]))]
     loop = np.cumsum(steps, axis=0) * [10 ** rng.uniform(0, 1), 1.0]
-    turn = rng.uniform(0, 2 * np.pi)
-    c, s = np.cos(turn), np.sin(turn)
-    return counter_clockwise(loop @ np.array([[c, s], [-s, c]]))
+    return counter_clockwise(turned(loop, rng.uniform(0, 2 * np.pi)))
 
 
 def rectilinear_loop(rng, rectangles):
@@ -134,9 +157,7 @@ def rectilinear_loop(rng, rectangles):
         if len(loop) >= 4:
             break
     if rng.random() < 0.5:
-        turn = rng.uniform(0, 2 * np.pi)
-        c, s = np.cos(turn), np.sin(turn)
-        loop = loop @ np.array([[c, s], [-s, c]])
+        loop = turned(loop, rng.uniform(0, 2 * np.pi))
     return counter_clockwise(loop)
 
 
@@ -307,7 +328,89 @@ def random_domain(rng, kind):
     raise RuntimeError('no valid %s domain in %d attempts' % (kind, MAX_ATTEMPTS))
 
 
+def corner_angles(loop):
+    """The domain's angle at each corner of a loop that has the domain on its left (an outer
+    loop CCW, a hole CW), in degrees."""
+    back, ahead = np.roll(loop, 1, axis=0) - loop, np.roll(loop, -1, axis=0) - loop
+    return np.degrees(np.arctan2(back[:, 1], back[:, 0]) - np.arctan2(ahead[:, 1], ahead[:, 0])) % 360
+
+
+def diameter(loop):
+    """The largest distance between two of the loop's points."""
+    return np.sqrt(np.max(np.sum((loop[:, None, :] - loop[None, :, :]) ** 2, axis=2)))
+
+
+def random_body(rng, kind):
+    """A body for a far field: an outer loop of the kind with its random feature, of diameter
+    BODY_SIZE and turned at random, CCW; (loop, shape, feature, its description), or None if
+    the feature found no place."""
+    loop, shape = outer_loop(rng, kind)
+    loop, feature, detail = with_random_feature(rng, loop)
+    if loop is None:
+        return None
+    return turned(loop * (BODY_SIZE / diameter(loop)), rng.uniform(0, 2 * np.pi)), shape, feature, detail
+
+
+def placed_at_gap(rng, loop, bodies, gap):
+    """The loop moved, in a random direction from a point inside one of the bodies (shapely
+    polygons), until its distance to them is `gap` (to 1e-4 of it, not under it): the distance
+    is 0 where its own inner point sits on that point and more than `gap` far enough away, and
+    it changes no faster than the move, so bisection finds such a place."""
+    anchor = np.array(bodies[int(rng.integers(len(bodies)))].representative_point().coords[0])
+    start = anchor - np.array(Polygon(loop).representative_point().coords[0])
+    turn = rng.uniform(0, 2 * np.pi)
+    direction = np.array([np.cos(turn), np.sin(turn)])
+    others = unary_union(bodies)
+    lo_x, lo_y, hi_x, hi_y = others.bounds
+    near, far = 0.0, np.hypot(hi_x - lo_x, hi_y - lo_y) + diameter(loop) + 2 * gap
+    while far - near > 1e-4 * gap:
+        middle = (near + far) / 2
+        if Polygon(loop + start + middle * direction).distance(others) < gap:
+            near = middle
+        else:
+            far = middle
+    return loop + start + far * direction
+
+
+def far_field_domain(rng, kind):
+    """A valid far field: (far field loop, bodies (CW), hole points, how it was made: a dict)."""
+    for attempt in range(1, MAX_ATTEMPTS + 1):
+        slot = rng.random() < SLOT_CHANCE
+        drawn = [random_body(rng, kind) for _ in range(int(rng.integers(2 if slot else 1, 4)))]
+        if any(body is None for body in drawn):
+            continue
+        loops = [drawn[0][0]]
+        for body in drawn[1:]:
+            gap = rng.uniform(*SLOT_GAP) if slot and len(loops) == 1 else 10 ** rng.uniform(*np.log10(BODY_GAP))
+            loops.append(placed_at_gap(rng, body[0], [Polygon(loop) for loop in loops], gap * BODY_SIZE))
+        every = np.concatenate(loops)
+        centre = (every.min(axis=0) + every.max(axis=0)) / 2
+        height = rng.uniform(*FAR_FIELD_SIDE) * BODY_SIZE
+        width = height * (2 if rng.random() < RECTANGLE_CHANCE else 1)
+        outer = centre + np.array([[-width, -height], [width, -height], [width, height], [-width, height]]) / 2
+        holes = [loop[::-1].copy() for loop in loops]
+        points, inside = hole_points(holes)
+        if inside and is_valid_domain(outer, holes):
+            polygons = [Polygon(h) for h in holes]
+            gaps = [h.distance(g) for i, h in enumerate(polygons) for g in polygons[:i]]
+            made = {'kind': kind, 'shape': '+'.join(body[1] for body in drawn), 'bodies': len(holes),
+                    'body_vertices': len(every), 'feature': '+'.join(body[2] for body in drawn),
+                    'feature_detail': '; '.join(body[3] for body in drawn), 'far_field_width': width,
+                    'far_field_height': height, 'least_gap': min(gaps) if gaps else '', 'slot': slot,
+                    'sharpest_corner': min(np.min(corner_angles(loop)) for loop in [outer] + holes),
+                    'attempt': attempt}
+            return outer, holes, points, made
+    raise RuntimeError('no valid far field of %s bodies in %d attempts' % (kind, MAX_ATTEMPTS))
+
+
 def description(made):
+    if 'bodies' in made:
+        return ('far field %.3g x %.3g holding %d %s bod%s (%s) of diameter %g, %d vertices, least gap %s%s, '
+                '%s, sharpest corner %.3g deg, attempt %d'
+                % (made['far_field_width'], made['far_field_height'], made['bodies'], made['kind'],
+                   'y' if made['bodies'] == 1 else 'ies', made['shape'], BODY_SIZE, made['body_vertices'],
+                   '%.3g' % made['least_gap'] if made['bodies'] > 1 else '-', ' (a slot)' if made['slot'] else '',
+                   made['feature_detail'], made['sharpest_corner'], made['attempt']))
     return ('%(kind)s (%(shape)s), %(outer_vertices)d outer vertices, %(holes)d holes of %(hole_vertices)d '
             'vertices, %(feature_detail)s, scale %(scale).3g, offset (%(offset_x).3g, %(offset_y).3g), '
             'attempt %(attempt)d' % made)
@@ -335,15 +438,22 @@ def write_poly(path, loops, points, comments):
             out.write('%d %.17g %.17g\n' % (i, x, y))
 
 
-def write_domain(out_dir, seed, index, kinds=KINDS):
-    """Draws domain `index` of `seed` (kind: kinds[index % len(kinds)]) and writes it:
-    (path, how it was made: a dict)."""
+def write_domain(out_dir, seed, index, kinds=KINDS, far_field=False):
+    """Draws domain `index` of `seed` (kind: kinds[index % len(kinds)]), a far field if asked,
+    and writes it: (path, how it was made: a dict)."""
     kind = kinds[index % len(kinds)]
-    outer, holes, points, made = random_domain(np.random.default_rng([seed, index]), kind)
-    path = os.path.join(out_dir, '%s_%d_%d.poly' % (kind, seed, index))
-    write_poly(path, [outer] + holes, points,
-               [description(made), 'random_domains.py --seed %d, domain %d; loops outer first (CCW), holes CW, '
-                                   'marker = loop id' % (seed, index)])
+    rng = np.random.default_rng([seed, index])
+    if far_field:
+        outer, holes, points, made = far_field_domain(rng, kind)
+        path = os.path.join(out_dir, 'farfield_%s_%d_%d.poly' % (kind, seed, index))
+        how = ('random_domains.py --far-field --seed %d, domain %d; loops the far field first (CCW), then the '
+               'bodies (CW), marker = loop id' % (seed, index))
+    else:
+        outer, holes, points, made = random_domain(rng, kind)
+        path = os.path.join(out_dir, '%s_%d_%d.poly' % (kind, seed, index))
+        how = ('random_domains.py --seed %d, domain %d; loops outer first (CCW), holes CW, marker = loop id'
+               % (seed, index))
+    write_poly(path, [outer] + holes, points, [description(made), how])
     return path, made
 
 
@@ -355,21 +465,23 @@ def kinds_list(text):
     return kinds
 
 
-def add_domain_arguments(parser):
-    """--seed, --count and --kinds, shared with random_sweep.py."""
+def add_domain_arguments(parser, kinds=KINDS):
+    """--seed, --count and --kinds (default: `kinds`), shared with random_sweep.py and
+    boundary_layer_sweep.py."""
     parser.add_argument('--seed', type=int, required=True)
     parser.add_argument('--count', type=int, required=True, help='how many domains (indices 0 to N-1)')
-    parser.add_argument('--kinds', type=kinds_list, default=KINDS, help='comma-separated, of ' + ','.join(ALL_KINDS) + ' (default: ' + ','.join(KINDS) + ')')
+    parser.add_argument('--kinds', type=kinds_list, default=kinds, help='comma-separated, of ' + ','.join(ALL_KINDS) + ' (default: ' + ','.join(kinds) + ')')
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
     parser.add_argument('out_dir')
     add_domain_arguments(parser)
+    parser.add_argument('--far-field', action='store_true', help='far fields holding 1 to 3 bodies of the kinds')
     args = parser.parse_args()
     os.makedirs(args.out_dir, exist_ok=True)
     for index in range(args.count):
-        path, made = write_domain(args.out_dir, args.seed, index, args.kinds)
+        path, made = write_domain(args.out_dir, args.seed, index, args.kinds, args.far_field)
         print('%s: %s' % (os.path.basename(path), description(made)))
     return 0
 

@@ -57,27 +57,37 @@ def remove_if_there(path):
         os.remove(path)
 
 
-def run_mesher(mesher, poly, timeout):
-    """Runs the mesher on poly: (exit status or None on time-out, last line of its stderr, seconds)."""
+def mesher_command(mesher, poly, options=()):
+    """`mesher poly options -o IN.msh --report IN.json`, IN being poly without .poly."""
+    stem = poly[:-len('.poly')]
+    return [mesher, poly] + list(options) + ['-o', stem + '.msh', '--report', stem + '.json']
+
+
+def run_mesher(mesher, poly, timeout, options=()):
+    """Runs mesher_command(mesher, poly, options): (exit status or None on time-out, the lines of
+    its stderr, seconds)."""
     stem = poly[:-len('.poly')]
     for old in (stem + '.msh', stem + '.json'):
         remove_if_there(old)
     start = time.monotonic()
     try:
-        run = subprocess.run([mesher, poly, '-o', stem + '.msh', '--report', stem + '.json'],
-                             capture_output=True, text=True, timeout=timeout)
+        run = subprocess.run(mesher_command(mesher, poly, options), capture_output=True, text=True, timeout=timeout)
     except subprocess.TimeoutExpired:
-        return None, '', time.monotonic() - start
-    lines = run.stderr.strip().splitlines()
-    return run.returncode, lines[-1] if lines else '', time.monotonic() - start
+        return None, [], time.monotonic() - start
+    return run.returncode, run.stderr.strip().splitlines(), time.monotonic() - start
 
 
-def run_verifier(verifier, poly, excuse_above, timeout):
+def verifier_command(verifier, poly, options=()):
+    """`verify_mesh.py IN.msh --domain poly --no-overlap options --json` with this script's Python."""
+    return ([sys.executable, verifier, poly[:-len('.poly')] + '.msh', '--domain', poly, '--no-overlap']
+            + list(options) + ['--json'])
+
+
+def run_verifier(verifier, poly, options, timeout):
     """The verifier's JSON report on poly's mesh, or {'failed_checks': [why]} if it gave none."""
     try:
-        run = subprocess.run([sys.executable, verifier, poly[:-len('.poly')] + '.msh', '--domain', poly,
-                              '--no-overlap', '--excuse-above', str(excuse_above), '--json'],
-                             capture_output=True, text=True, timeout=timeout)
+        run = subprocess.run(verifier_command(verifier, poly, options), capture_output=True, text=True,
+                             timeout=timeout)
     except subprocess.TimeoutExpired:
         return {'failed_checks': ['verifier timeout']}
     try:
@@ -113,9 +123,11 @@ def mesher_unforced_quads(poly):
 def sweep_one(args, index):
     """Draws, meshes and verifies domain `index`: its CSV row."""
     poly, made = random_domains.write_domain(args.out_dir, args.seed, index, args.kinds)
-    status, message, seconds = run_mesher(args.mesher, poly, args.timeout)
+    status, lines, seconds = run_mesher(args.mesher, poly, args.timeout)
+    message = lines[-1] if lines else ''
     mesh_written = os.path.exists(poly[:-len('.poly')] + '.msh')
-    report = run_verifier(args.verifier, poly, args.excuse_above, args.verify_timeout) if mesh_written else {}
+    report = (run_verifier(args.verifier, poly, ['--excuse-above', str(args.excuse_above)], args.verify_timeout)
+              if mesh_written else {})
     outcome = outcome_of(status, report)
     if status is not None and status < 0:
         message = 'signal %s' % signal.Signals(-status).name
@@ -141,14 +153,14 @@ def print_run(row):
     sys.stdout.flush()
 
 
-def print_table(rows, key, title):
+def print_table(rows, key, title, outcomes=OUTCOMES):
     """One line per value of row[key] and one for all: runs, outcomes, median and max seconds."""
-    print('%-12s %5s' % (title, 'runs') + ''.join(' %s' % o for o in OUTCOMES) + ' %8s %8s' % ('median s', 'max s'))
+    print('%-12s %5s' % (title, 'runs') + ''.join(' %s' % o for o in outcomes) + ' %8s %8s' % ('median s', 'max s'))
     groups = sorted(set(row[key] for row in rows))
     for name, group in [(g, [r for r in rows if r[key] == g]) for g in groups] + [('all', rows)]:
         counts = Counter(r['outcome'] for r in group)
         seconds = [float(r['seconds']) for r in group]
-        print('%-12s %5d' % (name, len(group)) + ''.join(' %*d' % (len(o), counts[o]) for o in OUTCOMES)
+        print('%-12s %5d' % (name, len(group)) + ''.join(' %*d' % (len(o), counts[o]) for o in outcomes)
               + ' %8.2f %8.2f' % (statistics.median(seconds), max(seconds)))
 
 
@@ -163,9 +175,11 @@ def print_messages(rows):
         print('  %4d  %s    e.g. %s: %s' % (count, key, example['file'], example['message']))
 
 
-def write_results(rows, out_dir):
+def write_results(rows, out_dir, fields=CSV_FIELDS):
+    """OUT_DIR/results.csv, and the inputs of the runs that do not pass copied into OUT_DIR/failing/
+    (emptied first)."""
     with open(os.path.join(out_dir, 'results.csv'), 'w', newline='') as out:
-        writer = csv.DictWriter(out, CSV_FIELDS, extrasaction='ignore')
+        writer = csv.DictWriter(out, fields, extrasaction='ignore')
         writer.writeheader()
         writer.writerows(rows)
     failing = os.path.join(out_dir, 'failing')
