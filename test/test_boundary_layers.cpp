@@ -223,6 +223,27 @@ TEST(Boundary_layers, a_sharp_notch_skews_only_the_bands_at_its_tip)
   }
 }
 
+// A needle of 0.34° whose sides are closer than the validity check tells apart (1e-9 of the
+// diagonal) within 1e-5 of its tip: feet there made a node on the other side (a hanging node,
+// an invalid mesh with a stack 2e-5 thick) or, stood on the tip, fan rays along the sides
+// (angles of 2°). The tip's stack now reaches beyond that stretch.
+TEST(Boundary_layers, a_needle_tip_thicker_than_its_stack_keeps_the_mesh_valid)
+{
+  const QM::Domain_2<K> d =
+    qm2_test::polygons({ qm2_test::rectangle(-10, -10, 10, 10), { Point_2(0, -0.003), Point_2(1, 0), Point_2(0, 0.003) } },
+                       { Point_2(0.2, 0) });
+  for(double h : { 1e-5, 1e-6 }) {
+    const Layered l = mesh_with_layers(d, 2, h, 1.0);
+    EXPECT_TRUE(qm2_checks::is_conforming(l.mesh)) << h;
+    EXPECT_TRUE(QM::compute_quality(l.mesh).is_valid()) << h;
+    EXPECT_GE(l.report.layer_min_angle, 22.5) << h;
+    EXPECT_LE(l.report.layer_max_angle, 157.5) << h;
+    EXPECT_GE(l.report.outer_min_angle, 45 - 1e-6) << h;
+    EXPECT_LE(l.report.outer_max_angle, 135 + 1e-6) << h;
+    EXPECT_NEAR(l.report.walls[0].first_height_min, h, 0.01 * h) << h; // away from the tip
+  }
+}
+
 // The cases: 20 layers from 1e-4 at 1.15 on the shared NACA 0012 (a 341° trailing
 // edge) and 30P-30N (cusps of 352°, a slot thinner than two stacks). The slat cusp's fan
 // runs over rays the outer mesh crowds at one end; before the stacks were smoothed its

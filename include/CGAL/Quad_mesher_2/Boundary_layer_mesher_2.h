@@ -154,12 +154,15 @@ private:
     return h;
   }
 
-  // the full stack's thickness over the whole of band's wall edge: not thinned
+  // the stack's own thickness over the whole of band's wall edge: neither thinned nor
+  // thickened (at a needle's tip)
   bool full_thickness(const internal::Layer_band& band) const
   {
     const internal::Wall_offset& w = m_walls[band.wall];
-    const double thickness = (std::min)(w.thickness[band.edge], w.thickness[w.next(band.edge)]);
-    return thickness >= m_layers.thickness() * (1 - 1e-9);
+    const double T = m_layers.thickness();
+    for(std::size_t k : { band.edge, w.next(band.edge) })
+      if(std::abs(w.thickness[k] - T) > 1e-9 * T) return false;
+    return true;
   }
 
   // smooths the stacks' nodes off the wall, but for the rays of the bands with the stack's
@@ -192,6 +195,7 @@ private:
       const std::vector<double> hl = heights(r.mesh, band.left, a, b), hr = heights(r.mesh, band.right, a, b);
       if(!full_thickness(band)) {
         const double thickness = (std::min)(w.thickness[band.edge], w.thickness[w.next(band.edge)]);
+        if(thickness > T * (1 - 1e-9)) continue; // thickened at a needle's tip
         ++s.thinned_bands;
         if(thickness / T < s.thinnest_ratio) {
           s.thinnest_ratio = thickness / T;

@@ -24,6 +24,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <sstream>
 #include <vector>
@@ -165,7 +166,10 @@ private:
     const double snap = 1e-12;
     if(h.t <= snap) return { v, k, 0.0 };
     if(h.t >= 1 - snap) return { v, w.next(k), 0.0 };
-    return { v, k, wall_fraction(w, k, h.t) };
+    const double s = wall_fraction(w, k, h.t), length = edge_length(w, k);
+    if(s * length < nearest_foot(w, k)) return { v, k, 0.0 };
+    if((1 - s) * length < nearest_foot(w, w.next(k))) return { v, w.next(k), 0.0 };
+    return { v, k, s };
   }
 
   // Where the node at fraction t along the offset segment of wall edge k stands on the edge:
@@ -252,7 +256,7 @@ private:
       const std::size_t k = rays[j].k, e = w.prev(k);
       const double len = edge_length(w, e);
       const double room = prev.k == e ? (1 - prev.s) * len : len; // from the previous foot to vertex k
-      const double delta = (std::min)(m_f[1] * w.thickness[k], room / 2);
+      const double delta = (std::min)((std::max)(m_f[1] * w.thickness[k], nearest_foot(w, k)), room / 2);
       rays[j] = { rays[j].node, e, 1 - delta / len, false };
     }
     return fans;

@@ -51,6 +51,7 @@ struct Wall_offset
   std::vector<int> markers;                  // of wall edge k (vertex k to k + 1)
   std::vector<double> thickness;             // the stack's thickness at vertex k
   std::vector<std::vector<Point_2d>> offset; // of vertex k: one mitre point, or an arc's points
+  double apart = 0; // a distance the mesh's validity check tells apart, with a margin
 
   std::size_t size() const { return wall.size(); }
   std::size_t next(std::size_t k) const { return (k + 1) % wall.size(); }
@@ -63,6 +64,17 @@ inline double wall_turn(const Wall_offset& w, std::size_t k)
 {
   const Vector_2d e_in = w.wall[k] - w.wall[w.prev(k)], e_out = w.wall[w.next(k)] - w.wall[k];
   return std::atan2(CGAL::determinant(e_in, e_out), CGAL::scalar_product(e_in, e_out));
+}
+
+/// How near to wall vertex k a ray's foot of its own may stand on its edges: so far that it
+/// lies `w.apart` from the other edge at k; nearer, it would be a node on that edge or a near
+/// duplicate of k (at a needle's tip, on a short edge), and stands on k itself.
+inline double nearest_foot(const Wall_offset& w, std::size_t k)
+{
+  const Vector_2d a = w.wall[w.prev(k)] - w.wall[k], b = w.wall[w.next(k)] - w.wall[k];
+  if(CGAL::scalar_product(a, b) <= 0) return w.apart; // the other edge is nearest at k
+  const double sine = std::abs(CGAL::determinant(a, b)) / (length_2d(a) * length_2d(b));
+  return sine > 0 ? w.apart / sine : HUGE_VAL;
 }
 
 /// the unit normal of wall edge (a, b) into the domain (on its left)
@@ -166,9 +178,14 @@ public:
   void run()
   {
     for(Wall_offset& w : m_walls) {
+      w.apart = 4e-9 * m_diagonal; // four times the validity check's 1e-9 of the diagonal
       w.thickness.assign(w.size(), m_T);
-      for(std::size_t k = 0; k < w.size(); ++k)
+      for(std::size_t k = 0; k < w.size(); ++k) {
         w.thickness[k] = (std::min)(m_T, facing_distance(w, k) / 3);
+        // a needle's stack reaches beyond the stretch of its sides too close together for
+        // feet: the outer mesh's nodes there then stand on the tip at angles a fan can take
+        if(wall_turn(w, k) < -wall_arc_turn * 2) w.thickness[k] = (std::max)(w.thickness[k], nearest_foot(w, k));
+      }
       grade(w);
     }
     check_first_layers();
