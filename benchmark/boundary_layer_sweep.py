@@ -21,9 +21,10 @@ the report's angles_in_layers and angles_outside_layers (1e-7 degree slack); the
 all angles must agree with them (failed check report_angles if not). Each run ends as one of
   PASS             exit 0, every verifier check but angles_45_135 ok, the layers' angles in
                    [22.5, 157.5] and the other quads' in [45, 135];
-  layers excused   as PASS but for a layer angle under 22.5 degrees no smaller than the domain's
-                   sharpest corner (a body's notch or other reflex corner over 337.5 degrees),
-                   which forces it;
+  layers excused   as PASS but for layer angles outside [22.5, 157.5] within [a/2, 180 - a/2],
+                   a the domain's sharpest corner (a body's notch or other reflex corner over
+                   315 degrees): the stacks meet on the corner's bisector, the paper's Fig. 9(a)
+                   split that takes its 45-degree floor to 22.5;
   layers out       a layer angle outside [22.5, 157.5] that no corner forces;
   outside excused  the layers' angles in range, another angle outside [45, 135] (or exit 4) in a
                    domain with a corner sharper than 45 degrees;
@@ -136,8 +137,9 @@ def outcome_of(status, failed, figures, sharpest_corner):
         return 'other checks'
     layers = figures['layer_angles']
     if not within(layers, LAYER_ANGLES):
-        forced = sharpest_corner < LAYER_ANGLES[0] and layers[0] >= sharpest_corner - SLACK
-        return 'layers excused' if forced and layers[1] <= LAYER_ANGLES[1] + SLACK else 'layers out'
+        half = sharpest_corner / 2
+        forced = half < LAYER_ANGLES[0] and layers[0] >= half - SLACK and layers[1] <= 180 - half + SLACK
+        return 'layers excused' if forced else 'layers out'
     if not within(figures['outside_angles'], OUTSIDE_ANGLES) or status == random_sweep.QUADS_OUT:
         return 'outside excused' if sharpest_corner < OUTSIDE_ANGLES[0] else 'outside out'
     return 'PASS'

@@ -154,6 +154,27 @@ TEST(Boundary_layers, reflex_corners_of_the_domain_get_fans)
   EXPECT_NEAR(l.report.walls[0].first_height_max, 0.01, 1e-4);
 }
 
+// With one layer a fan has only its kites, and the outer mesh put 6 to 10 nodes on the arc of
+// a 270° corner: kites with tips of 15° to 30° (angles 14.6° to 168.8° for a square body). One
+// layer mitres outward turns up to 135° instead: 45° and 135° at a right angle.
+TEST(Boundary_layers, one_layer_mitres_right_angles_instead_of_fanning_them)
+{
+  const QM::Domain_2<K> d = qm2_test::polygons({ qm2_test::rectangle(-10, -10, 10, 10), qm2_test::rectangle(0, 0, 1, 1) },
+                                               { Point_2(0.5, 0.5) });
+  for(double h : { 1e-2, 1e-3, 1e-5 }) {
+    const Layered l = mesh_with_layers(d, 1, h, 1.2);
+    EXPECT_TRUE(qm2_checks::is_conforming(l.mesh)) << h;
+    EXPECT_TRUE(QM::compute_quality(l.mesh).is_valid()) << h;
+    EXPECT_EQ(l.report.walls[0].fans, 0u) << h;
+    EXPECT_GE(l.report.layer_min_angle, 45 - 1e-6) << h;
+    EXPECT_LE(l.report.layer_max_angle, 135 + 1e-6) << h;
+    EXPECT_GE(l.report.outer_min_angle, 45 - 1e-6) << h;
+    EXPECT_LE(l.report.outer_max_angle, 135 + 1e-6) << h;
+    EXPECT_NEAR(l.report.walls[0].first_height_min, h, 0.01 * h) << h;
+    EXPECT_NEAR(l.report.walls[0].first_height_max, h, 0.01 * h) << h;
+  }
+}
+
 TEST(Boundary_layers, a_sharp_trailing_edge_gets_a_valid_fan)
 {
   // a wedge whose tip turns the domain's boundary by 169° (a 349° corner of the domain)

@@ -98,7 +98,7 @@ public:
     auto start = std::chrono::steady_clock::now();
     m_loops = extract_loops(m_domain, m_traits);
     m_walls = internal::wall_loops(m_domain, m_loops, m_layers.wall_markers());
-    internal::Wall_offsetter<GeomTraits>(m_domain, m_loops, m_walls, m_layers.thickness(),
+    internal::Wall_offsetter<GeomTraits>(m_domain, m_loops, m_walls, m_layers.layers(), m_layers.thickness(),
                                          m_layers.first_height() / m_layers.thickness())
       .run();
     std::vector<std::size_t> offset_first;

@@ -52,6 +52,7 @@ struct Wall_offset
   std::vector<double> thickness;             // the stack's thickness at vertex k
   std::vector<std::vector<Point_2d>> offset; // of vertex k: one mitre point, or an arc's points
   double apart = 0; // a distance the mesh's validity check tells apart, with a margin
+  double mitre_turn = 0; // outward turns up to this are mitred, larger ones get an arc
 
   std::size_t size() const { return wall.size(); }
   std::size_t next(std::size_t k) const { return (k + 1) % wall.size(); }
@@ -83,8 +84,18 @@ inline Vector_2d wall_normal(const Point_2d& a, const Point_2d& b)
   return normalized_2d((b - a).perpendicular(COUNTERCLOCKWISE));
 }
 
-/// outward turns above this are offset by an arc, not a mitre
+/// the steps of an arc turn by at most twice this
 constexpr double wall_arc_turn = 3.14159265358979323846 / 4;
+
+/// Outward turns up to this are offset by a mitre: 45° with two layers or more, whose fans
+/// keep [45°, 135°]; 135° with one, whose fans have only their kites, with tips under 45°
+/// where the outer mesh puts several nodes on an arc's step, while the bands about a mitre
+/// of a turn t have angles 90° ± t / 2, and the outer mesh's nodes near the corner stand on
+/// its two edges.
+inline double mitre_turn(int layers)
+{
+  return layers == 1 ? 3 * wall_arc_turn : wall_arc_turn;
+}
 
 /// the offset points of wall vertex k at thickness t (see the file's comment)
 inline std::vector<Point_2d> wall_vertex_offset(const Wall_offset& w, std::size_t k, double t)
@@ -92,7 +103,7 @@ inline std::vector<Point_2d> wall_vertex_offset(const Wall_offset& w, std::size_
   const double turn = wall_turn(w, k);
   const Point_2d& v = w.wall[k];
   const Vector_2d n_in = wall_normal(w.wall[w.prev(k)], v);
-  if(turn >= -wall_arc_turn)
+  if(turn >= -w.mitre_turn)
     return { v + turned_2d(n_in, turn / 2) * (t / std::cos(turn / 2)) };
   const int steps = 2 * int(std::ceil(-turn / (2 * wall_arc_turn) - 1e-9));
   const double step = turn / steps;
@@ -151,10 +162,12 @@ template <class K>
 class Wall_offsetter
 {
 public:
-  /// `first_fraction`: the first layer's height over the stack's thickness
+  /// `layers`, `thickness`: the stack's; `first_fraction`: its first layer's height over its
+  /// thickness
   Wall_offsetter(const Domain_2<K>& domain, const Domain_loops_2<K>& loops, std::vector<Wall_offset>& walls,
-                 double thickness, double first_fraction)
-    : m_domain(domain), m_loops(loops), m_walls(walls), m_T(thickness), m_first_fraction(first_fraction)
+                 int layers, double thickness, double first_fraction)
+    : m_domain(domain), m_loops(loops), m_walls(walls), m_layers(layers), m_T(thickness),
+      m_first_fraction(first_fraction)
   {
     for(std::size_t l = 0; l < loops.loops.size(); ++l) {
       const auto& lv = loops.loops[l].vertices;
@@ -179,12 +192,13 @@ public:
   {
     for(Wall_offset& w : m_walls) {
       w.apart = 4e-9 * m_diagonal; // four times the validity check's 1e-9 of the diagonal
+      w.mitre_turn = mitre_turn(m_layers);
       w.thickness.assign(w.size(), m_T);
       for(std::size_t k = 0; k < w.size(); ++k) {
         w.thickness[k] = (std::min)(m_T, facing_distance(w, k) / 3);
         // a needle's stack reaches beyond the stretch of its sides too close together for
         // feet: the outer mesh's nodes there then stand on the tip at angles a fan can take
-        if(wall_turn(w, k) < -wall_arc_turn * 2) w.thickness[k] = (std::max)(w.thickness[k], nearest_foot(w, k));
+        if(wall_turn(w, k) < -2 * wall_arc_turn) w.thickness[k] = (std::max)(w.thickness[k], nearest_foot(w, k));
       }
       grade(w);
     }
@@ -397,6 +411,7 @@ private:
   const Domain_2<K>& m_domain;
   const Domain_loops_2<K>& m_loops;
   std::vector<Wall_offset>& m_walls;
+  int m_layers;
   double m_T;
   double m_first_fraction;
   double m_diagonal = 0; // of the input's loops

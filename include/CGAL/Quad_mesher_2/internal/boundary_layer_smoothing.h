@@ -158,7 +158,8 @@ private:
                                       { -0.70710678118654752, 0.70710678118654752 }, { -1, 0 },
                                       { -0.70710678118654752, -0.70710678118654752 }, { 0, -1 },
                                       { 0.70710678118654752, -0.70710678118654752 } };
-    for(double step = reach / 2, moves = 0; step > reach / 1024 && moves < 256; ++moves) {
+    double step = reach / 2;
+    for(int tries = 0; step > reach / 1024 && tries < 256; ++tries) {
       const Point_2d from = m_xy[v];
       Point_2d best = from;
       std::vector<double> best_local = current;
