@@ -54,7 +54,6 @@ import os
 import shlex
 import signal
 import sys
-from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
@@ -211,23 +210,10 @@ def print_worst_layers(rows, count=10):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
-    parser.add_argument('mesher')
-    parser.add_argument('out_dir')
+    random_sweep.add_sweep_arguments(parser, timeout=30)
     random_domains.add_domain_arguments(parser, random_domains.ALL_KINDS)
-    parser.add_argument('--jobs', type=int, default=2)
-    parser.add_argument('--timeout', type=float, default=30, help='seconds a mesher run may take')
-    parser.add_argument('--verify-timeout', type=float, default=300, help='seconds a verifier run may take')
-    parser.add_argument('--verifier', default=random_sweep.DEFAULT_VERIFIER,
-                        help='verify_mesh.py (default %(default)s)')
-    parser.add_argument('--keep-meshes', action='store_true', help='keep the meshes of passing runs too')
     args = parser.parse_args()
-    os.makedirs(args.out_dir, exist_ok=True)
-    rows = []
-    with ThreadPoolExecutor(args.jobs) as pool:
-        for row in pool.map(lambda index: sweep_one(args, index), range(args.count)):
-            rows.append(row)
-            if row['outcome'] != 'PASS':
-                random_sweep.print_run(row)
+    rows = random_sweep.sweep(args, sweep_one)
     random_sweep.write_results(rows, args.out_dir, CSV_FIELDS)
     write_reproducers(rows, args)
     if not rows:

@@ -190,26 +190,38 @@ def write_results(rows, out_dir, fields=CSV_FIELDS):
             shutil.copy(os.path.join(out_dir, row['file']), failing)
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
+def add_sweep_arguments(parser, timeout):
+    """The arguments every sweep takes but the domains': mesher, out_dir, jobs, time-outs, verifier."""
     parser.add_argument('mesher')
     parser.add_argument('out_dir')
-    random_domains.add_domain_arguments(parser)
     parser.add_argument('--jobs', type=int, default=2)
-    parser.add_argument('--timeout', type=float, default=15, help='seconds a mesher run may take')
+    parser.add_argument('--timeout', type=float, default=timeout, help='seconds a mesher run may take')
     parser.add_argument('--verify-timeout', type=float, default=300, help='seconds a verifier run may take')
     parser.add_argument('--verifier', default=DEFAULT_VERIFIER, help='verify_mesh.py (default %(default)s)')
-    parser.add_argument('--excuse-above', type=float, default=360,
-                        help="the verifier's --excuse-above: 360 excuses no reflex corner (default)")
     parser.add_argument('--keep-meshes', action='store_true', help='keep the meshes of passing runs too')
-    args = parser.parse_args()
+
+
+def sweep(args, one):
+    """one(args, index) for the domains 0 to args.count - 1 on args.jobs threads, in order; prints
+    each run that does not pass as it ends. Returns the rows."""
     os.makedirs(args.out_dir, exist_ok=True)
     rows = []
     with ThreadPoolExecutor(args.jobs) as pool:
-        for row in pool.map(lambda index: sweep_one(args, index), range(args.count)):
+        for row in pool.map(lambda index: one(args, index), range(args.count)):
             rows.append(row)
             if row['outcome'] != 'PASS':
                 print_run(row)
+    return rows
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
+    add_sweep_arguments(parser, timeout=15)
+    random_domains.add_domain_arguments(parser)
+    parser.add_argument('--excuse-above', type=float, default=360,
+                        help="the verifier's --excuse-above: 360 excuses no reflex corner (default)")
+    args = parser.parse_args()
+    rows = sweep(args, sweep_one)
     write_results(rows, args.out_dir)
     if not rows:
         return 0

@@ -66,6 +66,18 @@ std::vector<double> first_heights(const Mesh& m, const std::vector<int>& wall_ma
   return heights;
 }
 
+// the mesh is conforming and valid, its layers' angles within [low, 180° - low] and the
+// rest's within [45°, 135°]
+void expect_valid_with_angles(const Layered& l, double low, const std::string& where = "")
+{
+  EXPECT_TRUE(qm2_checks::is_conforming(l.mesh)) << where;
+  EXPECT_TRUE(QM::compute_quality(l.mesh).is_valid()) << where;
+  EXPECT_GE(l.report.layer_min_angle, low) << where;
+  EXPECT_LE(l.report.layer_max_angle, 180 - low) << where;
+  EXPECT_GE(l.report.outer_min_angle, 45 - 1e-6) << where;
+  EXPECT_LE(l.report.outer_max_angle, 135 + 1e-6) << where;
+}
+
 // the share of `values` within `tolerance` (relative) of `target`
 double share_near(const std::vector<double>& values, double target, double tolerance)
 {
@@ -80,8 +92,7 @@ TEST(Boundary_layers, a_flat_wall_gets_every_layer_at_its_height)
   const QM::Domain_2<K> d = qm2_test::polygons({ qm2_test::rectangle(0, 0, 4, 1) });
   const double H = 0.005, R = 1.2;
   const Layered l = mesh_with_layers(d, 8, H, R);
-  EXPECT_TRUE(qm2_checks::is_conforming(l.mesh));
-  EXPECT_TRUE(QM::compute_quality(l.mesh).is_valid());
+  expect_valid_with_angles(l, 45 - 1e-6); // the mitres at the corners: 45° and 135°
   const std::vector<double> h = first_heights(l.mesh, { 1 });
   ASSERT_FALSE(h.empty());
   EXPECT_EQ(share_near(h, H, 0.01), 1.0); // every wall edge, the corners' too
@@ -94,10 +105,6 @@ TEST(Boundary_layers, a_flat_wall_gets_every_layer_at_its_height)
   EXPECT_NEAR(w.thickness_min, QM::Boundary_layer_criteria_2(8, H, R).thickness(), 1e-9);
   EXPECT_EQ(w.thinned_bands, 0u);
   EXPECT_EQ(l.report.layer_quads, 8 * w.bands);
-  EXPECT_GE(l.report.layer_min_angle, 45 - 1e-6); // the mitres at the corners: 45° and 135°
-  EXPECT_LE(l.report.layer_max_angle, 135 + 1e-6);
-  EXPECT_GE(l.report.outer_min_angle, 45 - 1e-6);
-  EXPECT_LE(l.report.outer_max_angle, 135 + 1e-6);
 }
 
 TEST(Boundary_layers, a_cylinder_in_a_far_field_keeps_its_angles)
@@ -107,17 +114,12 @@ TEST(Boundary_layers, a_cylinder_in_a_far_field_keeps_its_angles)
   for(int n : { 1, 5, 40 }) {
     const double H = 0.002 / n, R = 1.15;
     const Layered l = mesh_with_layers(d, n, H, R); // walls: the hole's loop, by default
-    EXPECT_TRUE(qm2_checks::is_conforming(l.mesh)) << n;
-    EXPECT_TRUE(QM::compute_quality(l.mesh).is_valid()) << n;
+    expect_valid_with_angles(l, 80, std::to_string(n)); // near rectangles
     EXPECT_EQ(share_near(first_heights(l.mesh, { 2 }), H, 0.01), 1.0) << n;
     ASSERT_EQ(l.report.walls.size(), 1u);
     EXPECT_EQ(l.report.walls[0].marker, 2);
     EXPECT_EQ(l.report.walls[0].fans, 0u); // turns of 5.6°: no corner
     EXPECT_EQ(l.report.layer_quads, std::size_t(n) * l.report.walls[0].bands) << n;
-    EXPECT_GE(l.report.layer_min_angle, 80) << n; // near rectangles
-    EXPECT_LE(l.report.layer_max_angle, 100) << n;
-    EXPECT_GE(l.report.outer_min_angle, 45 - 1e-6) << n;
-    EXPECT_LE(l.report.outer_max_angle, 135 + 1e-6) << n;
     if(n > 1) {
       EXPECT_NEAR(l.report.walls[0].growth_min, R, 0.02 * R) << n;
       EXPECT_NEAR(l.report.walls[0].growth_max, R, 0.02 * R) << n;
@@ -142,13 +144,8 @@ TEST(Boundary_layers, reflex_corners_of_the_domain_get_fans)
   const QM::Domain_2<K> d = qm2_test::polygons({ qm2_test::rectangle(-5, -5, 5, 5), qm2_test::rectangle(0, 0, 1, 1) },
                                                { Point_2(0.5, 0.5) });
   const Layered l = mesh_with_layers(d, 5, 0.01, 1.2);
-  EXPECT_TRUE(qm2_checks::is_conforming(l.mesh));
-  EXPECT_TRUE(QM::compute_quality(l.mesh).is_valid());
+  expect_valid_with_angles(l, 22.5);
   EXPECT_EQ(l.report.walls[0].fans, 4u);
-  EXPECT_GE(l.report.layer_min_angle, 22.5);
-  EXPECT_LE(l.report.layer_max_angle, 157.5);
-  EXPECT_GE(l.report.outer_min_angle, 45 - 1e-6);
-  EXPECT_LE(l.report.outer_max_angle, 135 + 1e-6);
   // off the corners, every wall edge has its first height
   EXPECT_NEAR(l.report.walls[0].first_height_min, 0.01, 1e-4);
   EXPECT_NEAR(l.report.walls[0].first_height_max, 0.01, 1e-4);
@@ -163,13 +160,8 @@ TEST(Boundary_layers, one_layer_mitres_right_angles_instead_of_fanning_them)
                                                { Point_2(0.5, 0.5) });
   for(double h : { 1e-2, 1e-3, 1e-5 }) {
     const Layered l = mesh_with_layers(d, 1, h, 1.2);
-    EXPECT_TRUE(qm2_checks::is_conforming(l.mesh)) << h;
-    EXPECT_TRUE(QM::compute_quality(l.mesh).is_valid()) << h;
+    expect_valid_with_angles(l, 45 - 1e-6, std::to_string(h));
     EXPECT_EQ(l.report.walls[0].fans, 0u) << h;
-    EXPECT_GE(l.report.layer_min_angle, 45 - 1e-6) << h;
-    EXPECT_LE(l.report.layer_max_angle, 135 + 1e-6) << h;
-    EXPECT_GE(l.report.outer_min_angle, 45 - 1e-6) << h;
-    EXPECT_LE(l.report.outer_max_angle, 135 + 1e-6) << h;
     EXPECT_NEAR(l.report.walls[0].first_height_min, h, 0.01 * h) << h;
     EXPECT_NEAR(l.report.walls[0].first_height_max, h, 0.01 * h) << h;
   }
@@ -255,12 +247,7 @@ TEST(Boundary_layers, a_needle_tip_thicker_than_its_stack_keeps_the_mesh_valid)
                        { Point_2(0.2, 0) });
   for(double h : { 1e-5, 1e-6 }) {
     const Layered l = mesh_with_layers(d, 2, h, 1.0);
-    EXPECT_TRUE(qm2_checks::is_conforming(l.mesh)) << h;
-    EXPECT_TRUE(QM::compute_quality(l.mesh).is_valid()) << h;
-    EXPECT_GE(l.report.layer_min_angle, 22.5) << h;
-    EXPECT_LE(l.report.layer_max_angle, 157.5) << h;
-    EXPECT_GE(l.report.outer_min_angle, 45 - 1e-6) << h;
-    EXPECT_LE(l.report.outer_max_angle, 135 + 1e-6) << h;
+    expect_valid_with_angles(l, 22.5, std::to_string(h));
     EXPECT_NEAR(l.report.walls[0].first_height_min, h, 0.01 * h) << h; // away from the tip
   }
 }
@@ -278,12 +265,7 @@ TEST(Boundary_layers, the_shared_air_foils_keep_every_layer_angle_within_22_5_an
     std::string error;
     ASSERT_TRUE(QM::IO::read_poly(std::string(QM2_SHARED_DATA_DIR) + file, d, &error)) << file << ": " << error;
     const Layered l = mesh_with_layers(d, 20, 1e-4, 1.15, walls);
-    EXPECT_TRUE(qm2_checks::is_conforming(l.mesh)) << file;
-    EXPECT_TRUE(QM::compute_quality(l.mesh).is_valid()) << file;
-    EXPECT_GE(l.report.layer_min_angle, 22.5) << file;
-    EXPECT_LE(l.report.layer_max_angle, 157.5) << file;
-    EXPECT_GE(l.report.outer_min_angle, 45 - 1e-6) << file;
-    EXPECT_LE(l.report.outer_max_angle, 135 + 1e-6) << file;
+    expect_valid_with_angles(l, 22.5, file);
     for(const auto& w : l.report.walls) {
       EXPECT_NEAR(w.first_height_min, 1e-4, 1e-6) << file << " marker " << w.marker;
       EXPECT_NEAR(w.first_height_max, 1e-4, 1e-6) << file << " marker " << w.marker;

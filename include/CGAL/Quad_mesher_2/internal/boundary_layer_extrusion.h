@@ -21,11 +21,14 @@
 #include <CGAL/Quad_mesher_2/internal/approximate_kernel.h>
 #include <CGAL/Quad_mesher_2/internal/boundary_layer_offset.h>
 #include <CGAL/Quad_mesher_2/internal/loop_locator.h>
+#include <CGAL/Quad_mesher_2/internal/mesh_adjacency.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <memory>
 #include <sstream>
 #include <vector>
 
@@ -76,8 +79,10 @@ public:
   {
     Layer_extrusion_result<Point_2> r;
     r.mesh = std::move(outer);
-    r.first_layer_quad = m_outer_quads = r.mesh.quads.size();
+    r.first_layer_quad = r.mesh.quads.size();
     m_outer_points = r.mesh.points.size();
+    if(m_f.size() == 2) // one layer: the kites' middles are the outer mesh's nodes
+      m_outer_quads_at = std::make_unique<Vertex_quads>(r.mesh.quads, m_outer_points);
     r.fans.assign(m_walls.size(), 0);
     m_wall_node.assign(m_walls.size(), {});
     for(std::size_t i = 0; i < m_walls.size(); ++i) m_wall_node[i].assign(m_walls[i].size(), none);
@@ -321,7 +326,7 @@ private:
   // a and b are as far from v, the kite's sides meet their rays at right angles and its
   // angles are its tip's, 90°, 180° minus its tip's and 90°), or as far towards there as
   // better_at() allows (with one layer, m is the outer mesh's node, whose quads count too).
-  void square_the_kite(const std::array<std::size_t, 4>& kite, std::size_t first_quad, Mesh& mesh) const
+  void square_the_kite(const std::array<std::size_t, 4>& kite, std::size_t fan_quads, Mesh& mesh) const
   {
     auto at = [&](std::size_t v) { return to_point_2d(mesh.points[v]); };
     const Point_2d v = at(kite[0]), pb = at(kite[1]), pa = at(kite[3]);
@@ -335,29 +340,32 @@ private:
     // all the way there, else as far as the outer mesh's quads at m allow
     for(double step = 1; step >= 1.0 / 64; step /= 2) {
       const Point_2d to = along_2d(from, x, step);
-      if(better_at(m, to, first_quad, mesh)) {
+      if(better_at(m, to, fan_quads, mesh)) {
         mesh.points[m] = Point_2(to.x(), to.y());
         return;
       }
     }
   }
 
-  // whether node m at `to` keeps the quads at it (from index `first_quad` on) convex, those of
-  // the outer mesh within [45°, 135°], and brings the worst nearer to right angles
-  bool better_at(std::size_t m, const Point_2d& to, std::size_t first_quad, const Mesh& mesh) const
+  // whether node m at `to` keeps the quads at it convex (the fan's, from index `fan_quads`
+  // on, and with one layer the outer mesh's), those of the outer mesh within [45°, 135°],
+  // and brings the worst nearer to right angles
+  bool better_at(std::size_t m, const Point_2d& to, std::size_t fan_quads, const Mesh& mesh) const
   {
+    std::vector<std::size_t> at_m;
+    if(m_outer_quads_at != nullptr && m < m_outer_points)
+      for(std::uint32_t q : (*m_outer_quads_at)[m]) at_m.push_back(q);
+    for(std::size_t q = fan_quads; q < mesh.quads.size(); ++q)
+      if(std::find(mesh.quads[q].begin(), mesh.quads[q].end(), m) != mesh.quads[q].end()) at_m.push_back(q);
     double before = 0, after = 0; // the worst angle's distance from 90° in the quads at m
-    for(std::size_t q = first_quad; q < mesh.quads.size(); ++q) {
+    for(std::size_t q : at_m) {
       std::array<Point_2d, 4> p, moved;
-      bool at_m = false;
       for(int c = 0; c < 4; ++c) {
-        at_m = at_m || mesh.quads[q][c] == m;
         p[c] = to_point_2d(mesh.points[mesh.quads[q][c]]);
         moved[c] = mesh.quads[q][c] == m ? to : p[c];
       }
-      if(!at_m) continue;
       if(!strictly_convex(moved)) return false;
-      if(q < m_outer_quads && quad_max_angle_deviation(moved) > 45 + 1e-9) return false;
+      if(q < fan_quads && quad_max_angle_deviation(moved) > 45 + 1e-9) return false;
       before = (std::max)(before, quad_max_angle_deviation(p));
       after = (std::max)(after, quad_max_angle_deviation(moved));
     }
@@ -483,13 +491,11 @@ private:
     const std::size_t first_quad = mesh.quads.size();
     for(std::size_t r = 0; r + 1 < ring1.size(); ++r)
       fan_gap(fan, ring1[r], ring1[r + 1], 1, mesh);
-    const std::size_t v = fan.v, top = layers >= 2 ? 1 : layers;
     for(std::size_t r = 0; r + 2 < ring1.size(); r += 2)
-      mesh.quads.push_back({ { v, fan_node(fan, ring1[r + 2], top, mesh), fan_node(fan, ring1[r + 1], top, mesh),
-                               fan_node(fan, ring1[r], top, mesh) } });
-    // with one layer the kites' middles are the outer mesh's nodes, whose quads count too
+      mesh.quads.push_back({ { fan.v, fan_node(fan, ring1[r + 2], 1, mesh), fan_node(fan, ring1[r + 1], 1, mesh),
+                               fan_node(fan, ring1[r], 1, mesh) } });
     for(std::size_t q = mesh.quads.size() - runs / 2; q < mesh.quads.size(); ++q)
-      square_the_kite(mesh.quads[q], layers >= 2 ? first_quad : 0, mesh);
+      square_the_kite(mesh.quads[q], first_quad, mesh);
   }
 
   // the quads of wall i's stacks, counterclockwise: a band between each two rays with
@@ -540,7 +546,8 @@ private:
   const std::vector<Wall_offset>& m_walls;
   std::vector<double> m_f;
   std::vector<std::vector<std::size_t>> m_wall_node; // by wall and vertex: its mesh node
-  std::size_t m_outer_quads = 0, m_outer_points = 0; // the outer mesh's, first in the result
+  std::size_t m_outer_points = 0;                    // the outer mesh's, first in the result
+  std::unique_ptr<Vertex_quads> m_outer_quads_at;    // with one layer: its quads at each node
   std::vector<std::size_t> m_wall_nodes;             // the stacks' nodes on the wall
   std::vector<std::size_t> m_fan_nodes;              // and inside fans
 };

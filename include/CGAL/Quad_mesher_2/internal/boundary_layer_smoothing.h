@@ -49,8 +49,8 @@ public:
   }
 
   /// Moves the nodes about the stack quads outside [45°, 135°] and their neighbours, each at
-  /// most `visits` times; returns how many moves were kept.
-  std::size_t run(int visits = 16)
+  /// most `visits` times.
+  void run(int visits = 16)
   {
     std::deque<std::size_t> queue;
     std::vector<char> queued(m_xy.size(), 0);
@@ -64,19 +64,15 @@ public:
     for(std::size_t q = m_first_quad; q < m_mesh.quads.size(); ++q)
       if(badness(q) > 45)
         for(std::size_t v : m_mesh.quads[q]) push_with_neighbours(v, push);
-    std::size_t moves = 0;
     while(!queue.empty()) {
       const std::size_t v = queue.front();
       queue.pop_front();
       queued[v] = 0;
       ++visited[v];
-      if(!improve(v)) continue;
-      ++moves;
-      push_with_neighbours(v, push);
+      if(improve(v)) push_with_neighbours(v, push);
     }
     for(std::size_t v = 0; v < m_xy.size(); ++v)
       if(m_nodes[v] != Stack_node::fixed) m_mesh.points[v] = Point_2(m_xy[v].x(), m_xy[v].y());
-    return moves;
   }
 
 private:
