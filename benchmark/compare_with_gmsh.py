@@ -56,7 +56,8 @@ def verify(bench, msh, poly):
     return {"quads": V["n_quads"], "other_cells": V["n_other_cells"],
             "vertices": V["n_points"] - V["n_points_unused"],
             "angle_min": V["angle_min"], "angle_max": V["angle_max"],
-            "share_45_135": V["frac_angles_45_135"], "out": V["n_angles_outside_45_135"],
+            "share_45_135": V["frac_angles_45_135"], "share_60_120": V["frac_angles_60_120"],
+            "aspect_ratio_max": V["aspect_ratio_max"], "out": V["n_angles_outside_45_135"],
             "out_unforced": V["n_angles_outside_45_135_unexcused"], "hausdorff_rel": V["hausdorff_rel"],
             "failed_checks": failed, "valid": not failed}
 
@@ -114,25 +115,26 @@ def cell(R, what):
     if R is None or R.get(what) is None:
         return "—"
     v = R[what]
-    if what == "share_45_135":
+    if what in ("share_45_135", "share_60_120"):
         return "%.2f%%" % (100 * v)
     if what == "out":
         return "%d (%d)" % (v, R["out_unforced"])
     if what == "valid":
         return "yes" if v else "no: " + ", ".join(R["failed_checks"])
-    return {"angle_min": "%.1f°", "angle_max": "%.1f°", "hausdorff_rel": "%.1e", "seconds": "%.1f s"}.get(
+    return {"angle_min": "%.1f°", "angle_max": "%.1f°", "hausdorff_rel": "%.1e", "seconds": "%.1f s",
+            "aspect_ratio_max": "%.1f"}.get(
         what, "%s") % v
 
 
 def markdown(rows, meta):
-    head = ["case", "quads", "vertices", "min angle", "max angle", "in [45°,135°]", "out (unforced)", "H", "valid",
-            "wall time", "our depth", "Gmsh variant"]
+    head = ["case", "quads", "quads ours/Gmsh", "vertices", "min angle", "max angle", "in [45°,135°]", "in [60°,120°]",
+            "max aspect ratio", "out (unforced)", "H", "valid", "wall time", "our depth", "Gmsh variant"]
     L = ["%s; %s; Gmsh %s, variants %s, sizes %g x the shortest incident segment, timeout %g s per run%s. "
          "Each cell: ours / Gmsh's best." % (meta["date"], meta["machine"], meta["gmsh_version"],
                                               ", ".join(GMSH_VARIANTS), meta["gmsh_size_factor"], meta["timeout"],
                                               "; Gmsh's runs from " + meta["gmsh_from"] if "gmsh_from" in meta else ""),
          "",
-        "| " + " | ".join(head) + " |", "| --- |" + " ---: |" * 7 + " --- | ---: | ---: | --- |"]
+        "| " + " | ".join(head) + " |", "| --- |" + " ---: |" * 10 + " --- | ---: | ---: | --- |"]
     for r in rows:
         o, g = r["ours"], r["gmsh"].get(r["gmsh_best"]) if r["gmsh_best"] else None
         if r["gmsh_best"]:
@@ -142,9 +144,12 @@ def markdown(rows, meta):
                                            for v, R in r["gmsh"].items())
         if o["status"] != "ok":
             variant += "; ours: " + o["status"]
-        L.append("| " + " | ".join([r["case"]] + ["%s / %s" % (cell(o, w), cell(g, w)) for w in
-                                   ("quads", "vertices", "angle_min", "angle_max", "share_45_135", "out",
-                                    "hausdorff_rel", "valid", "seconds")] + [str(o.get("quadtree_depth", "—")), variant]) + " |")
+        ratio = "%.2f" % (o["quads"] / g["quads"]) if g and o.get("quads") and g.get("quads") else "—"
+        figures = ["%s / %s" % (cell(o, w), cell(g, w)) for w in
+                   ("quads", "vertices", "angle_min", "angle_max", "share_45_135", "share_60_120", "aspect_ratio_max",
+                    "out", "hausdorff_rel", "valid", "seconds")]
+        L.append("| " + " | ".join([r["case"], figures[0], ratio] + figures[1:]
+                                   + [str(o.get("quadtree_depth", "—")), variant]) + " |")
     return "\n".join(L) + "\n"
 
 

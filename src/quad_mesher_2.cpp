@@ -103,7 +103,8 @@ private:
   std::vector<std::pair<std::string, std::string>> m_files; // (written now, target)
 };
 const QM::Stage all_stages[] = { QM::Stage::QUADTREE, QM::Stage::POINTS, QM::Stage::CLEARANCE,
-                                 QM::Stage::TEMPLATES, QM::Stage::BUFFER1, QM::Stage::BUFFER2 };
+                                 QM::Stage::TEMPLATES, QM::Stage::BUFFER1, QM::Stage::BUFFER2,
+                                 QM::Stage::SMOOTHING };
 
 std::vector<std::string> stage_names()
 {
@@ -265,7 +266,11 @@ void add_quality(const QM::Mesh_quality_2& quality, nlohmann::ordered_json& repo
   report["share_in_60_120"] = quality.share_in_60_120;
   report["aspect_ratio"] = { { "min", quality.min_aspect_ratio },
                              { "max", quality.max_aspect_ratio },
-                             { "mean", quality.mean_aspect_ratio } };
+                             { "mean", quality.mean_aspect_ratio },
+                             { "p50", quality.aspect_ratio_percentiles[0] },
+                             { "p95", quality.aspect_ratio_percentiles[1] },
+                             { "p99", quality.aspect_ratio_percentiles[2] } };
+  report["min_edge_over_diagonal"] = quality.min_edge_over_diagonal;
   report["scaled_jacobian"] = { { "min", quality.min_scaled_jacobian },
                                 { "mean", quality.mean_scaled_jacobian } };
   report["validity"] = { { "valid", quality.is_valid() },
@@ -346,6 +351,8 @@ void fill_report(const Options& opt, const QM::Domain_2<K>& domain, QM::Stage la
   }
   if(last >= QM::Stage::TEMPLATES)
     add_buffer(opt, mesher, report);
+  if(last >= QM::Stage::SMOOTHING)
+    report["smoothing"] = { { "moves", mesher.smoothing_moves() } };
   report["points_as_vertices"] = mesher.point_vertices().size();
   report["max_aspect_ratio_at_points"] = QM::max_aspect_ratio_around(mesh, mesher.point_vertices());
   report["quadtree_depth"] = tree.depth();
@@ -475,7 +482,7 @@ int run(const Options& opt)
     std::cerr << "quad-mesher: the mesh failed its validity check (see the report)\n";
     return 3;
   }
-  if(last == QM::Stage::BUFFER2 && mesher.buffer_report().bad_angle_quads > 0)
+  if(last >= QM::Stage::BUFFER2 && mesher.buffer_report().bad_angle_quads > 0)
     return 4; // add_buffer() warned with the count and why the rounds ended
   return 0;
 }
@@ -539,7 +546,8 @@ void add_options(CLI::App& app, Options& opt, std::array<CLI::Option*, 2>& splin
                  "isolated point of a domain (paper §3, Lemma 1); 'clearance' (domains only) "
                  "keeps the core mesh clear of the boundary (paper §4.3, Fig. 3(c)); 'templates' opens the "
                  "core's notches and cuts its corners (§4.4); 'buffer1' adds the first buffer layer (§4.5); 'buffer2' "
-                 "(the default for domains) the second, reaching the boundary (§4.6)")
+                 "the second, reaching the boundary (§4.6); 'smoothing' (the default for domains) moves "
+                 "vertices to bring angles nearer 90 degrees, keeping every angle in [45, 135] in it")
     ->check(CLI::IsMember(stage_names()));
   app.add_flag("--merge-duplicates", opt.merge_duplicates,
                "in a point file (.node, x y), merge points given twice and report how many, "
@@ -607,7 +615,7 @@ bool layer_options_are_consistent(const Options& opt, const CLI::App& app)
     std::cerr << "quad-mesher: " << e.what() << "\n";
     return false;
   }
-  if(!opt.stop_after.empty() && opt.stop_after != "buffer2") {
+  if(!opt.stop_after.empty() && opt.stop_after != "smoothing") {
     std::cerr << "quad-mesher: --boundary-layers needs the whole pipeline, not --stop-after " << opt.stop_after << "\n";
     return false;
   }

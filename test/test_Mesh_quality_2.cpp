@@ -384,3 +384,19 @@ TEST(MeshQuality2, EmptyMesh)
   EXPECT_EQ(q.min_angle, 0.0);
   EXPECT_TRUE(q.is_valid());
 }
+
+// Aspect-ratio percentiles (nearest rank) and the shortest edge over the diagonal: a row of
+// 20 quads, 19 unit squares and one 1 by 0.25 at the end.
+TEST(MeshQuality2, AspectRatioPercentilesAndShortestEdge)
+{
+  using namespace qm2_test_quality;
+  Mesh m = make_grid(20, 1);
+  for(std::size_t v : { std::size_t(20), std::size_t(41) })
+    m.points[v] = Point(19.25, CGAL::to_double(m.points[v].y()));
+  const Mesh_quality_2 q = compute_quality(m);
+  EXPECT_DOUBLE_EQ(q.max_aspect_ratio, 4.0);
+  EXPECT_DOUBLE_EQ(q.aspect_ratio_percentiles[0], 1.0);
+  EXPECT_DOUBLE_EQ(q.aspect_ratio_percentiles[1], 1.0);  // 19 of 20 quads
+  EXPECT_DOUBLE_EQ(q.aspect_ratio_percentiles[2], 4.0);
+  EXPECT_DOUBLE_EQ(q.min_edge_over_diagonal, 0.25 / std::hypot(19.25, 1.0));
+}

@@ -298,7 +298,7 @@ TEST(Quadtree_mesher_2, make_quad_mesh_2_meshes_a_domain_up_to_its_boundary)
                K::Point_2(1.5, 1.5), K::Point_2(2.5, 1.5), K::Point_2(2.5, 2.5), K::Point_2(1.5, 2.5) };
   d.segments = { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 0 }, { 4, 5 }, { 5, 6 }, { 6, 7 }, { 7, 4 } };
   d.holes = { K::Point_2(2, 2) };
-  EXPECT_EQ(QM::last_stage(d), QM::Stage::BUFFER2);
+  EXPECT_EQ(QM::last_stage(d), QM::Stage::SMOOTHING);
   const auto mesh = QM::make_quad_mesh_2(d);
   ASSERT_GT(mesh.quads.size(), 0u);
   // in the closed square, and not strictly inside the hole

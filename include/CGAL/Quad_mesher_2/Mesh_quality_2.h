@@ -64,6 +64,11 @@ struct Mesh_quality_2
   double max_aspect_ratio = 0;
   /// Mean aspect ratio, over the quads with no zero-length edge.
   double mean_aspect_ratio = 0;
+  /// The aspect ratios below which lie 50%, 95% and 99% of those quads (nearest rank).
+  std::array<double, 3> aspect_ratio_percentiles{};
+  /// The shortest edge of a quad over the diagonal of the used vertices' bounding box (0 if
+  /// an edge has zero length).
+  double min_edge_over_diagonal = 0;
 
   /// Smallest scaled Jacobian of a quad. The scaled Jacobian of a corner is
   /// cross(e_next, e_prev) / (|e_next| |e_prev|) (the sine of its angle, 0 if an edge has zero
@@ -418,6 +423,12 @@ public:
       m_r.min_aspect_ratio = m_min_ar;
       m_r.max_aspect_ratio = m_max_ar;
       m_r.mean_aspect_ratio = m_sum_ar / double(m_n_ar);
+      const double shares[3] = { 0.5, 0.95, 0.99 };
+      for(int k = 0; k < 3; ++k) {
+        const auto rank = m_ratios.begin() + std::ptrdiff_t(std::ceil(shares[k] * double(m_ratios.size())) - 1);
+        std::nth_element(m_ratios.begin(), rank, m_ratios.end());
+        m_r.aspect_ratio_percentiles[k] = *rank;
+      }
     }
     if(m_n_sj > 0) {
       m_r.min_scaled_jacobian = m_min_sj;
@@ -427,6 +438,8 @@ public:
 
   /// by vertex: 1 if some quad uses it
   const std::vector<char>& used() const { return m_used; }
+  /// the shortest edge of a quad (0 if one has zero length)
+  double shortest_edge() const { return m_shortest_edge; }
 
 private:
   static constexpr double slack = 1e-7;
@@ -451,9 +464,11 @@ private:
   {
     const double lo = (std::min)((std::min)(len[0], len[1]), (std::min)(len[2], len[3]));
     const double hi = (std::max)((std::max)(len[0], len[1]), (std::max)(len[2], len[3]));
+    m_shortest_edge = (std::min)(m_shortest_edge, lo);
     if(!(lo > 0))
       return false;
     const double ar = hi / lo;
+    m_ratios.push_back(ar);
     m_min_ar = (std::min)(m_min_ar, ar);
     m_max_ar = (std::max)(m_max_ar, ar);
     m_sum_ar += ar;
@@ -469,6 +484,8 @@ private:
   std::size_t m_n_angles = 0, m_n_45 = 0, m_n_60 = 0;
   double m_min_ar = (std::numeric_limits<double>::max)(), m_max_ar = 0, m_sum_ar = 0;
   std::size_t m_n_ar = 0;
+  std::vector<double> m_ratios; // every aspect ratio, for the percentiles
+  double m_shortest_edge = HUGE_VAL;
   double m_min_sj = (std::numeric_limits<double>::max)(), m_sum_sj = 0;
   std::size_t m_n_sj = 0;
 };
@@ -646,6 +663,7 @@ Mesh_quality_2 internal::compute_quality(const Quad_mesh_2<Point_2>& mesh, std::
 
   // Hanging nodes: used vertices in the interior of a used-once edge of another quad.
   const double diag = length_2d(hi - lo);
+  if(diag > 0 && shapes.shortest_edge() < HUGE_VAL) r.min_edge_over_diagonal = shapes.shortest_edge() / diag;
   r.number_of_hanging_nodes = count_hanging_nodes(pts, used, mesh.quads, boundary, 1e-9 * diag, where);
   return r;
 }

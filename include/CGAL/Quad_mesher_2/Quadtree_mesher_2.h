@@ -18,7 +18,9 @@
 #include <CGAL/Quad_mesher_2/internal/buffer_layers.h>
 #include <CGAL/Quad_mesher_2/internal/buffer_zone_clearance.h>
 #include <CGAL/Quad_mesher_2/internal/insert_points.h>
+#include <CGAL/Quad_mesher_2/internal/grid_aligned_domain.h>
 #include <CGAL/Quad_mesher_2/internal/lattice_region.h>
+#include <CGAL/Quad_mesher_2/internal/mesh_smoothing.h>
 #include <CGAL/Quad_mesher_2/internal/quadtree_sizing.h>
 #include <CGAL/Quad_mesher_2/internal/refinement_rounds.h>
 
@@ -52,8 +54,10 @@ enum class Stage
              ///< quad) and its convex corners cut so that every boundary angle is in
              ///< [112.5°, 225°] where the core allows (paper §4.4)
   BUFFER1,   ///< domains only: the first buffer layer, on angle bisectors (paper §4.5)
-  BUFFER2    ///< domains only: the second buffer layer, reaching the boundary; the whole domain
+  BUFFER2,   ///< domains only: the second buffer layer, reaching the boundary; the whole domain
              ///< is meshed and every boundary vertex is a mesh vertex (paper §4.6)
+  SMOOTHING  ///< domains only: vertices moved to bring angles nearer 90°, under the bound that
+             ///< keeps every angle in [45°, 135°] in it (not in the paper)
 };
 
 /// \ingroup PkgQuadMesher2Ref
@@ -67,6 +71,7 @@ inline const char* stage_name(Stage s)
   case Stage::TEMPLATES: return "templates";
   case Stage::BUFFER1: return "buffer1";
   case Stage::BUFFER2: return "buffer2";
+  case Stage::SMOOTHING: return "smoothing";
   }
   return "?";
 }
@@ -74,11 +79,11 @@ inline const char* stage_name(Stage s)
 /// \ingroup PkgQuadMesher2Ref
 /// the last stage `domain` has, which `make_quad_mesh_2()` and `Quadtree_mesher_2::run()` run
 /// to by default, as the command-line tool does: `Stage::POINTS` for a point cloud,
-/// `Stage::BUFFER2` (the whole domain meshed) for a domain bounded by segments
+/// `Stage::SMOOTHING` (the whole domain meshed, then smoothed) for a domain bounded by segments
 template <class GeomTraits>
 Stage last_stage(const Domain_2<GeomTraits>& domain)
 {
-  return domain.is_point_cloud() ? Stage::POINTS : Stage::BUFFER2;
+  return domain.is_point_cloud() ? Stage::POINTS : Stage::SMOOTHING;
 }
 
 /// \ingroup PkgQuadMesher2Ref
@@ -225,6 +230,33 @@ public:
     return ok && m_buffer_report.invalid_quads == 0 && m_buffer_report.bad_angle_quads == 0;
   }
 
+  /// Stage 7 (domains only, not in the paper) on `mesh`, a valid result of the buffer stages:
+  /// its vertices move towards places that bring its angles nearer 90°, each move kept only
+  /// under the bound of `internal::Mesh_smoothing`; input vertices and isolated points stay,
+  /// and boundary vertices move only along straight runs of the boundary. The whole-mesh
+  /// check runs again on the result, and `mesh` is left as it was if that would fail it.
+  void smooth_mesh(Mesh& mesh)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<internal::Point_2d> xy;
+    xy.reserve(mesh.points.size());
+    for(const Point_2& p : mesh.points) xy.push_back(internal::to_point_2d(p));
+    const std::vector<internal::Point_2d> before = xy;
+    internal::Mesh_smoothing smoothing(xy, mesh.quads, pinned_vertices(xy), 1e-6 * box_diagonal());
+    m_smoothing_moves = smoothing.smooth(max_smoothing_passes);
+    Mesh smoothed = mesh;
+    for(std::size_t v = 0; v < xy.size(); ++v)
+      if(xy[v] != before[v]) smoothed.points[v] = Point_2(xy[v].x(), xy[v].y());
+    record("smoothing", start); // the checks record their own time
+    if(check_whole_mesh(smoothed))
+      mesh = std::move(smoothed);
+    else
+      check_whole_mesh(mesh);
+  }
+  /// how many vertex moves the last `smooth_mesh()` kept
+  std::size_t smoothing_moves() const { return m_smoothing_moves; }
+  static constexpr int max_smoothing_passes = 6;
+
   /// Runs every stage the input has (up to `last_stage(domain)`: the whole domain, or a point
   /// cloud's points made vertices) and returns the mesh; see `run(Stage)`.
   Mesh run() { return run(last_stage(m_domain)); }
@@ -240,10 +272,12 @@ public:
   /// round if a later one was worse). The rounds end too once the refinement a round asked
   /// for splits no cell (finer cells are refused there): the next round would repeat it.
   /// A mesh of the whole domain (`last` is `Stage::BUFFER2`) comes with its `boundary_edges`
-  /// and their markers.
+  /// and their markers; with `Stage::SMOOTHING` it is smoothed first (`smooth_mesh()`).
   Mesh run(Stage last)
   {
     Mesh mesh = run_rounds(last);
+    if(last >= Stage::SMOOTHING)
+      smooth_mesh(mesh);
     if(last >= Stage::BUFFER2)
       mesh.boundary_edges = internal::marked_boundary_edges(mesh, m_domain, m_loops);
     return mesh;
@@ -360,6 +394,10 @@ private:
       Mesh mesh = core_mesh();
       if(last >= Stage::POINTS && m_criteria.points_as_vertices())
         insert_points(mesh);
+      if(last >= Stage::CLEARANCE && m_grid_aligned_candidate && keep_grid_aligned_cells(mesh)) {
+        record_round(mesh, true, 0, round_start);
+        return mesh;
+      }
       if(last >= Stage::CLEARANCE)
         clear_buffer_zone(mesh);
       if(!m_lost_points.empty()) {
@@ -406,6 +444,26 @@ private:
       // not the round budget
       throw Meshing_error(buffer_error(requests, added < requests.size() || m_tree->depth() >= m_tree->max_depth()));
     }
+  }
+
+  // Where the boundary lies on cell sides (internal/grid_aligned_domain.h), the cells inside
+  // the domain are the whole mesh, with no buffer: true if so, `mesh` then cut to them and
+  // checked. Else `mesh` is left as it was.
+  bool keep_grid_aligned_cells(Mesh& mesh)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    Mesh cells = mesh;
+    std::size_t removed = 0;
+    if(!internal::Grid_aligned_cells<GeomTraits>(m_domain, m_loops, m_traits).keep_cells_inside(cells, removed))
+      return false;
+    m_buffer_report = Buffer_report();
+    m_buffer_requests = internal::Refinement_requests();
+    record("clearance", start); // the check records its own time
+    if(!check_whole_mesh(cells)) return false;
+    m_removed = { removed, 0, 0, 0 };
+    m_core_vertex_size.clear();
+    mesh = std::move(cells);
+    return true;
   }
 
   // what run() returns and the accessors show of one round
@@ -555,7 +613,8 @@ private:
   // point cloud, whose mesh covers that box with the margin (mesh_region())
   double margin() const
   {
-    if(!m_criteria.points_as_vertices() && !m_domain.is_point_cloud())
+    // an axis-parallel domain keeps its corners on the lattice where they can be
+    if((!m_criteria.points_as_vertices() && !m_domain.is_point_cloud()) || m_grid_aligned_candidate)
       return 0;
     const double xmin = m_box.xmin(), xmax = m_box.xmax(), ymin = m_box.ymin(), ymax = m_box.ymax();
     const double margin = (std::max)(xmax - xmin, ymax - ymin) / 8;
@@ -588,6 +647,8 @@ private:
     merge_duplicate_points();
     if(!m_domain.is_point_cloud())
       m_loops = extract_loops(m_domain, m_traits); // validates the boundary first
+    m_grid_aligned_candidate = !m_domain.is_point_cloud() && m_loops.isolated_points.empty()
+                               && internal::is_axis_parallel(m_domain, m_loops, m_traits);
     const auto box = points_box();
     m_box = CGAL::Bbox_2(CGAL::to_double(m_traits.compute_xmin_2_object()(box)),
                          CGAL::to_double(m_traits.compute_ymin_2_object()(box)),
@@ -697,6 +758,25 @@ private:
            && quality.number_of_near_duplicate_vertices == 0;
   }
 
+  // the vertices the smoothing keeps where they are: the input's points and isolated points
+  std::vector<char> pinned_vertices(const std::vector<internal::Point_2d>& xy) const
+  {
+    std::vector<internal::Point_2d> input;
+    input.reserve(m_points.size());
+    for(const Point_2& p : m_points) input.push_back(internal::to_point_2d(p));
+    std::sort(input.begin(), input.end());
+    std::vector<char> pinned(xy.size(), 0);
+    for(std::size_t v = 0; v < xy.size(); ++v) pinned[v] = std::binary_search(input.begin(), input.end(), xy[v]);
+    for(std::size_t v : m_point_vertices)
+      if(v < pinned.size()) pinned[v] = 1;
+    return pinned;
+  }
+
+  double box_diagonal() const
+  {
+    return std::sqrt(CGAL::square(m_box.xmax() - m_box.xmin()) + CGAL::square(m_box.ymax() - m_box.ymin()));
+  }
+
   // adds the round's figures and shows them to the observer
   void record_round(const Mesh& mesh, bool valid, std::size_t requests, std::chrono::steady_clock::time_point start)
   {
@@ -732,6 +812,8 @@ private:
   internal::Refinement_requests m_buffer_requests; // the last round's
   std::optional<Mesh_quality_2> m_quality;
   std::vector<std::size_t> m_lost_points; // by anchored point: see clear_buffer_zone()
+  std::size_t m_smoothing_moves = 0;
+  bool m_grid_aligned_candidate = false; // an axis-parallel domain with no isolated point
   std::vector<std::size_t> m_point_names; // the input index of each anchored point
   typedef internal::Refinement_rounds<Rounds_end> Rounds;
   Rounds m_rounds{ max_refinement_rounds, max_stalled_angle_rounds };

@@ -1,0 +1,362 @@
+// Copyright (c) 2026 Quad_mesher_2 contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Author(s): Quad_mesher_2 developers
+//
+// The smoothing stage, after the buffer layers (not in the paper, whose quads keep the places
+// its stages give them): vertices move, one at a time, towards places that bring the angles of
+// their quads nearer 90 degrees, under the hard bound. Interior vertices move freely; a
+// boundary vertex between two boundary neighbours on one line slides along that line, which
+// leaves the meshed region as it was; input vertices and isolated points stay.
+
+#ifndef CGAL_QUAD_MESHER_2_INTERNAL_MESH_SMOOTHING_H
+#define CGAL_QUAD_MESHER_2_INTERNAL_MESH_SMOOTHING_H
+
+#include <CGAL/Quad_mesher_2/internal/mesh_adjacency.h>
+#include <CGAL/Quad_mesher_2/internal/quad_geometry.h>
+#include <CGAL/Quad_mesher_2/internal/wedge_winding.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Quad_mesher_2 {
+namespace internal {
+
+/// The shape of one quad as the smoothing judges it, in products only (no root, no arcsine):
+/// for each corner the squared cosine of its angle, whether every corner is strictly convex,
+/// and the squared ratio of its longest edge to its shortest.
+struct Smoothing_quad_shape
+{
+  std::array<double, 4> cos2{};
+  bool convex = false;
+  double aspect2 = 0;
+
+  explicit Smoothing_quad_shape(const std::array<Point_2d, 4>& q)
+  {
+    std::array<Vector_2d, 4> e;
+    std::array<double, 4> len2;
+    for(int k = 0; k < 4; ++k) {
+      e[k] = q[(k + 1) % 4] - q[k];
+      len2[k] = e[k].squared_length();
+    }
+    convex = true;
+    for(int c = 0; c < 4; ++c) {
+      const Vector_2d& in = e[(c + 3) % 4];
+      const Vector_2d& out = e[c];
+      const double cross = CGAL::determinant(in, out), dot = CGAL::scalar_product(in, out);
+      const double ll = len2[c] * len2[(c + 3) % 4];
+      // a sine above 1e-6 is far beyond the rounding of cross: the corner is convex, exactly
+      convex = convex && cross > 0 && cross * cross > 1e-12 * ll;
+      cos2[c] = ll > 0 ? dot * dot / ll : 1.0;
+    }
+    const auto [shortest, longest] = std::minmax_element(len2.begin(), len2.end());
+    aspect2 = *shortest > 0 ? *longest / *shortest : HUGE_VAL;
+  }
+};
+
+/// The smoothing of a whole quad mesh (see the file comment). A move is kept only if it
+/// lowers the energy of the vertex's quads (the sum over their corners of cos^2, plus three
+/// times the excess of cos^2 over 1/4: angles outside [60, 120] weigh most; plus, for a quad
+/// whose aspect ratio r is over 3, log(r^2 / 9)) and:
+/// - every quad at the vertex stays strictly convex, and the corners it winds once around it
+///   (no fold);
+/// - no angle in [45, 135] leaves it, and none outside goes further out;
+/// - no quad's aspect ratio rises above 5, or above its own where it was over 5;
+/// - no edge at the vertex becomes shorter than `min_edge`, or than it was where it was.
+class Mesh_smoothing
+{
+public:
+  typedef Quad_vertices Quad;
+
+  /// `pinned`: the vertices that may not move (input vertices, isolated points); boundary
+  /// vertices not between two boundary neighbours on one line stay too.
+  Mesh_smoothing(std::vector<Point_2d>& xy, const std::vector<Quad>& quads, const std::vector<char>& pinned,
+                 double min_edge)
+    : m_xy(xy), m_quads(quads), m_quads_at(quads, xy.size()), m_min_edge2(min_edge * min_edge),
+      m_freedom(xy.size(), FREE), m_boundary_prev(xy.size(), none), m_boundary_next(xy.size(), none),
+      m_searches(xy.size(), 0)
+  {
+    find_boundary();
+    for(std::size_t v = 0; v < xy.size(); ++v)
+      if(pinned[v] != 0 || m_quads_at[v].size() == 0) m_freedom[v] = PINNED;
+  }
+
+  /// At most `passes` sweeps over the vertices, each over those whose quads changed in the
+  /// sweep before; returns how many moves were kept.
+  std::size_t smooth(int passes)
+  {
+    std::vector<char> active(m_xy.size(), 0), next_active(m_xy.size(), 0);
+    for(std::size_t v = 0; v < m_xy.size(); ++v) active[v] = m_freedom[v] != PINNED;
+    std::size_t moves = 0;
+    for(int pass = 0; pass < passes; ++pass) {
+      std::size_t moved = 0;
+      for(std::size_t v = 0; v < m_xy.size(); ++v) {
+        if(active[v] == 0 || !try_moves(v)) continue;
+        ++moved;
+        for(std::size_t q : m_quads_at[v])
+          for(std::size_t w : m_quads[q]) next_active[w] = m_freedom[w] != PINNED;
+      }
+      moves += moved;
+      if(moved == 0) break;
+      active.swap(next_active);
+      std::fill(next_active.begin(), next_active.end(), 0);
+    }
+    return moves;
+  }
+
+private:
+  enum Freedom : unsigned char { PINNED, FREE, SLIDING };
+  static constexpr std::size_t none = std::size_t(-1);
+  // an angle's squared cosine at 45 or 135 degrees, and the rounding the verifier's slack
+  // (1e-7 degrees, about 1.7e-9 in cos^2) forgives many times over
+  static constexpr double bound_cos2 = 0.5 + 1e-12;
+  static constexpr double max_aspect2 = 25.0;
+  // an energy gain below this (about a degree on one angle near 60) is not worth a move
+  static constexpr double min_gain = 1e-3;
+  static constexpr unsigned char max_searches = 1;
+
+  // Boundary edges are the quad edges a -> b without b -> a. A vertex with one boundary edge
+  // in and one out, on a line with its two boundary neighbours, slides; other boundary
+  // vertices (corners, curves, vertices where two loops touch) stay.
+  void find_boundary()
+  {
+    std::vector<int> boundary_edges(m_xy.size(), 0);
+    std::vector<std::array<std::size_t, 2>> around;
+    for(std::size_t a = 0; a < m_xy.size(); ++a) {
+      around.clear();
+      for(std::size_t q : m_quads_at[a]) {
+        const int c = corner_of(m_quads[q], a);
+        around.push_back({ m_quads[q][(c + 1) % 4], m_quads[q][(c + 3) % 4] });
+      }
+      for(const auto& e : around) {
+        const std::size_t b = e[0];
+        int uses = 0;
+        for(const auto& f : around) uses += (f[0] == b ? 1 : 0) + (f[1] == b ? 1 : 0);
+        if(uses != 1) continue;
+        ++boundary_edges[a];
+        ++boundary_edges[b];
+        m_boundary_next[a] = b;
+        m_boundary_prev[b] = a;
+      }
+    }
+    for(std::size_t v = 0; v < m_xy.size(); ++v) {
+      if(boundary_edges[v] == 0) continue;
+      m_freedom[v] = boundary_edges[v] == 2 && on_line_between(v) ? SLIDING : PINNED;
+    }
+  }
+
+  // whether v lies on the segment between its boundary neighbours, to a relative 1e-12:
+  // sliding along it then moves the boundary by rounding only
+  bool on_line_between(std::size_t v) const
+  {
+    const Point_2d& a = m_xy[m_boundary_prev[v]];
+    const Point_2d& b = m_xy[m_boundary_next[v]];
+    const Vector_2d ab = b - a, av = m_xy[v] - a;
+    const double cross = CGAL::determinant(ab, av), dot = CGAL::scalar_product(ab, av);
+    return std::abs(cross) <= 1e-12 * ab.squared_length() && dot > 0 && dot < ab.squared_length();
+  }
+
+  std::array<Point_2d, 4> corners(const Quad& Q) const
+  {
+    return { m_xy[Q[0]], m_xy[Q[1]], m_xy[Q[2]], m_xy[Q[3]] };
+  }
+
+  static double corner_energy(double cos2) { return cos2 + 3.0 * (std::max)(0.0, cos2 - 0.25); }
+
+  // the quads at v as they are now, and their energy
+  struct Star
+  {
+    std::vector<Smoothing_quad_shape> shapes;
+    std::vector<std::array<double, 2>> edges2; // at v in each quad: to the next and previous corner
+    double energy = 0;
+    bool needs_search = false; // an angle outside [60, 120], or a quad's aspect ratio over 3
+  };
+
+  // fills `s` (its buffers kept: no allocation once they have grown)
+  void star(std::size_t v, Star& s) const
+  {
+    s.shapes.clear();
+    s.edges2.clear();
+    s.energy = 0;
+    s.needs_search = false;
+    for(std::size_t q : m_quads_at[v]) {
+      const Quad& Q = m_quads[q];
+      s.shapes.emplace_back(corners(Q));
+      const Smoothing_quad_shape& shape = s.shapes.back();
+      for(double c2 : shape.cos2) {
+        s.energy += corner_energy(c2);
+        s.needs_search = s.needs_search || c2 > 0.25;
+      }
+      if(shape.aspect2 > 9.0) {
+        s.energy += std::log(shape.aspect2 / 9.0);
+        s.needs_search = true;
+      }
+      const int c = corner_of(Q, v);
+      s.edges2.push_back(
+          { (m_xy[Q[(c + 1) % 4]] - m_xy[v]).squared_length(), (m_xy[Q[(c + 3) % 4]] - m_xy[v]).squared_length() });
+    }
+  }
+
+  // whether the star after a move (`after`) keeps the bound that `before` had
+  bool keeps_the_bound(const Star& before, const Star& after) const
+  {
+    for(std::size_t k = 0; k < before.shapes.size(); ++k) {
+      const Smoothing_quad_shape& b = before.shapes[k];
+      const Smoothing_quad_shape& a = after.shapes[k];
+      if(!a.convex) return false;
+      for(int c = 0; c < 4; ++c)
+        if(a.cos2[c] > (std::max)(b.cos2[c], bound_cos2)) return false;
+      if(a.aspect2 > (std::max)(b.aspect2, max_aspect2)) return false;
+      for(int side = 0; side < 2; ++side)
+        if(after.edges2[k][side] < (std::min)(before.edges2[k][side], m_min_edge2)) return false;
+    }
+    return true;
+  }
+
+  // no fold: the corners at v (and, on the boundary, the outside between its boundary
+  // neighbours) wind once around it
+  bool unfolded(std::size_t v) const
+  {
+    std::vector<std::pair<Point_2d, Point_2d>> wedges;
+    for(std::size_t q : m_quads_at[v]) {
+      const Quad& Q = m_quads[q];
+      const int c = corner_of(Q, v);
+      wedges.emplace_back(m_xy[Q[(c + 1) % 4]], m_xy[Q[(c + 3) % 4]]);
+    }
+    if(m_freedom[v] == SLIDING) wedges.emplace_back(m_xy[m_boundary_prev[v]], m_xy[m_boundary_next[v]]);
+    return times_wedges_cover(m_xy[v], wedges) == 1;
+  }
+
+  // Where v's quads would be parallelograms, on average (for each quad at v, its two
+  // neighbours' sum less the opposite corner), and the mean of its edge neighbours.
+  std::array<Point_2d, 2> targets(std::size_t v) const
+  {
+    Vector_2d parallelogram = NULL_VECTOR, neighbours = NULL_VECTOR;
+    double n = 0;
+    for(std::size_t q : m_quads_at[v]) {
+      const Quad& Q = m_quads[q];
+      const int c = corner_of(Q, v);
+      const Vector_2d next = m_xy[Q[(c + 1) % 4]] - ORIGIN, prev = m_xy[Q[(c + 3) % 4]] - ORIGIN;
+      parallelogram = parallelogram + next + prev - (m_xy[Q[(c + 2) % 4]] - ORIGIN);
+      neighbours = neighbours + next + prev;
+      ++n;
+    }
+    return { ORIGIN + parallelogram / n, ORIGIN + neighbours / (2 * n) };
+  }
+
+  // the point of the line through v's boundary neighbours nearest to p, kept a tenth of the
+  // way from each
+  Point_2d on_boundary_line(std::size_t v, const Point_2d& p) const
+  {
+    const Point_2d& a = m_xy[m_boundary_prev[v]];
+    const Point_2d& b = m_xy[m_boundary_next[v]];
+    const Vector_2d ab = b - a;
+    const double t = CGAL::scalar_product(p - a, ab) / ab.squared_length();
+    return along_2d(a, b, (std::min)(0.9, (std::max)(0.1, t)));
+  }
+
+  // whether v is kept at p: the star's energy is lower than `before`'s, by more than a
+  // negligible gain, under the bound
+  bool better_at(std::size_t v, const Point_2d& p, const Star& before, Star& after)
+  {
+    const Point_2d start = m_xy[v];
+    m_xy[v] = p;
+    star(v, after);
+    if(after.energy < before.energy - min_gain && keeps_the_bound(before, after) && unfolded(v)) return true;
+    m_xy[v] = start;
+    return false;
+  }
+
+  // Where a quad at v has an angle outside [60, 120] or an aspect ratio over 3 (elsewhere
+  // the bulk is as good as the measure asks): tries v at each target, then halfway and a
+  // quarter of the way there, and keeps the first place that lowers the energy under the
+  // bound. If that still leaves such a quad, a pattern search follows, at most `max_searches` times
+  // per vertex (the targets do most moves; a search that found its local best repeats
+  // itself). True if v moved.
+  bool try_moves(std::size_t v)
+  {
+    const Point_2d start = m_xy[v];
+    Star& before = m_before;
+    Star& after = m_after;
+    star(v, before);
+    if(!before.needs_search) return false;
+    bool moved = false;
+    for(const Point_2d& target : targets(v)) {
+      for(double step : { 1.0, 0.5, 0.25 }) {
+        Point_2d p = along_2d(start, target, step);
+        if(m_freedom[v] == SLIDING) p = on_boundary_line(v, p);
+        if(p != start && better_at(v, p, before, after)) {
+          moved = true;
+          break;
+        }
+      }
+      if(moved) break;
+    }
+    if(moved) std::swap(before, after);
+    if(before.needs_search && m_searches[v] < max_searches) {
+      ++m_searches[v];
+      moved = pattern_search(v) || moved;
+    }
+    return moved;
+  }
+
+  // Compass search from try_moves()'s star: steps of a quarter of v's shortest edge in 8
+  // directions (2 along the line for a sliding vertex), the first better place taken, the
+  // step halved when none is, down to a 16th.
+  bool pattern_search(std::size_t v)
+  {
+    Star& before = m_before;
+    Star& after = m_after;
+    static const double diagonal = 0.70710678118654752;
+    static const std::array<Vector_2d, 8> compass = { Vector_2d(1, 0),  Vector_2d(diagonal, diagonal),
+                                                      Vector_2d(0, 1),  Vector_2d(-diagonal, diagonal),
+                                                      Vector_2d(-1, 0), Vector_2d(-diagonal, -diagonal),
+                                                      Vector_2d(0, -1), Vector_2d(diagonal, -diagonal) };
+    std::array<Vector_2d, 8> directions = compass;
+    int n_directions = 8;
+    if(m_freedom[v] == SLIDING) {
+      const Vector_2d along = normalized_2d(m_xy[m_boundary_next[v]] - m_xy[m_boundary_prev[v]]);
+      directions[0] = along;
+      directions[1] = -along;
+      n_directions = 2;
+    }
+    double shortest2 = HUGE_VAL;
+    for(const auto& e : before.edges2) shortest2 = (std::min)(shortest2, (std::min)(e[0], e[1]));
+    const double first = 0.25 * std::sqrt(shortest2);
+    bool moved = false;
+    for(double h = first; h >= first / 16;) {
+      bool better = false;
+      for(int d = 0; d < n_directions && !better; ++d) {
+        Point_2d p = m_xy[v] + h * directions[d];
+        if(m_freedom[v] == SLIDING) p = on_boundary_line(v, p);
+        better = p != m_xy[v] && better_at(v, p, before, after);
+      }
+      if(better) {
+        std::swap(before, after);
+        moved = true;
+      } else {
+        h /= 2;
+      }
+    }
+    return moved;
+  }
+
+  Star m_before, m_after; // try_moves()'s, kept for their buffers
+  std::vector<Point_2d>& m_xy;
+  const std::vector<Quad>& m_quads;
+  Vertex_quads m_quads_at;
+  double m_min_edge2;
+  std::vector<Freedom> m_freedom;
+  std::vector<std::size_t> m_boundary_prev, m_boundary_next;
+  std::vector<unsigned char> m_searches; // pattern searches made from each vertex
+};
+
+} // namespace internal
+} // namespace Quad_mesher_2
+} // namespace CGAL
+
+#endif // CGAL_QUAD_MESHER_2_INTERNAL_MESH_SMOOTHING_H
