@@ -255,7 +255,7 @@ public:
   }
   /// how many vertex moves the last `smooth_mesh()` kept
   std::size_t smoothing_moves() const { return m_smoothing_moves; }
-  static constexpr int max_smoothing_passes = 6;
+  static constexpr int max_smoothing_passes = 4;
 
   /// Runs every stage the input has (up to `last_stage(domain)`: the whole domain, or a point
   /// cloud's points made vertices) and returns the mesh; see `run(Stage)`.

@@ -78,19 +78,24 @@ public:
                  double min_edge)
     : m_xy(xy), m_quads(quads), m_quads_at(quads, xy.size()), m_min_edge2(min_edge * min_edge),
       m_freedom(xy.size(), FREE), m_boundary_prev(xy.size(), none), m_boundary_next(xy.size(), none),
-      m_searches(xy.size(), 0)
+      m_descended(xy.size(), 0)
   {
     find_boundary();
     for(std::size_t v = 0; v < xy.size(); ++v)
       if(pinned[v] != 0 || m_quads_at[v].size() == 0) m_freedom[v] = PINNED;
   }
 
-  /// At most `passes` sweeps over the vertices, each over those whose quads changed in the
-  /// sweep before; returns how many moves were kept.
+  /// At most `passes` sweeps over the vertices: the first over those of quads with an angle
+  /// outside [60, 120] or an aspect ratio over 3, each next over those whose quads changed
+  /// in the sweep before; returns how many moves were kept.
   std::size_t smooth(int passes)
   {
     std::vector<char> active(m_xy.size(), 0), next_active(m_xy.size(), 0);
-    for(std::size_t v = 0; v < m_xy.size(); ++v) active[v] = m_freedom[v] != PINNED;
+    // first the vertices of quads the stage is for (most of a mesh is not: one look per quad
+    // instead of one per corner)
+    for(const Quad& Q : m_quads)
+      if(needs_smoothing(Smoothing_quad_shape(corners(Q))))
+        for(std::size_t v : Q) active[v] = m_freedom[v] != PINNED;
     std::size_t moves = 0;
     for(int pass = 0; pass < passes; ++pass) {
       std::size_t moved = 0;
@@ -117,7 +122,7 @@ private:
   static constexpr double max_aspect2 = 25.0;
   // an energy gain below this (about a degree on one angle near 60) is not worth a move
   static constexpr double min_gain = 1e-3;
-  static constexpr unsigned char max_searches = 1;
+  static constexpr int max_descent_steps = 4;
 
   // Boundary edges are the quad edges a -> b without b -> a. A vertex with one boundary edge
   // in and one out, on a line with its two boundary neighbours, slides; other boundary
@@ -165,6 +170,12 @@ private:
     return { m_xy[Q[0]], m_xy[Q[1]], m_xy[Q[2]], m_xy[Q[3]] };
   }
 
+  // an angle outside [60, 120] or an aspect ratio over 3
+  static bool needs_smoothing(const Smoothing_quad_shape& shape)
+  {
+    return shape.aspect2 > 9.0 || *std::max_element(shape.cos2.begin(), shape.cos2.end()) > 0.25;
+  }
+
   static double corner_energy(double cos2) { return cos2 + 3.0 * (std::max)(0.0, cos2 - 0.25); }
 
   // the quads at v as they are now, and their energy
@@ -173,7 +184,7 @@ private:
     std::vector<Smoothing_quad_shape> shapes;
     std::vector<std::array<double, 2>> edges2; // at v in each quad: to the next and previous corner
     double energy = 0;
-    bool needs_search = false; // an angle outside [60, 120], or a quad's aspect ratio over 3
+    bool wanted = false; // a quad with an angle outside [60, 120] or an aspect ratio over 3
   };
 
   // fills `s` (its buffers kept: no allocation once they have grown)
@@ -182,19 +193,14 @@ private:
     s.shapes.clear();
     s.edges2.clear();
     s.energy = 0;
-    s.needs_search = false;
+    s.wanted = false;
     for(std::size_t q : m_quads_at[v]) {
       const Quad& Q = m_quads[q];
       s.shapes.emplace_back(corners(Q));
       const Smoothing_quad_shape& shape = s.shapes.back();
-      for(double c2 : shape.cos2) {
-        s.energy += corner_energy(c2);
-        s.needs_search = s.needs_search || c2 > 0.25;
-      }
-      if(shape.aspect2 > 9.0) {
-        s.energy += std::log(shape.aspect2 / 9.0);
-        s.needs_search = true;
-      }
+      for(double c2 : shape.cos2) s.energy += corner_energy(c2);
+      if(shape.aspect2 > 9.0) s.energy += std::log(shape.aspect2 / 9.0);
+      s.wanted = s.wanted || needs_smoothing(shape);
       const int c = corner_of(Q, v);
       s.edges2.push_back(
           { (m_xy[Q[(c + 1) % 4]] - m_xy[v]).squared_length(), (m_xy[Q[(c + 3) % 4]] - m_xy[v]).squared_length() });
@@ -274,16 +280,15 @@ private:
   // Where a quad at v has an angle outside [60, 120] or an aspect ratio over 3 (elsewhere
   // the bulk is as good as the measure asks): tries v at each target, then halfway and a
   // quarter of the way there, and keeps the first place that lowers the energy under the
-  // bound. If that still leaves such a quad, a pattern search follows, at most `max_searches` times
-  // per vertex (the targets do most moves; a search that found its local best repeats
-  // itself). True if v moved.
+  // bound. If that still leaves such a quad, a descent follows, once per vertex (the targets
+  // do most moves; a descent that found its local best would repeat itself). True if v moved.
   bool try_moves(std::size_t v)
   {
     const Point_2d start = m_xy[v];
     Star& before = m_before;
     Star& after = m_after;
     star(v, before);
-    if(!before.needs_search) return false;
+    if(!before.wanted) return false;
     bool moved = false;
     for(const Point_2d& target : targets(v)) {
       for(double step : { 1.0, 0.5, 0.25 }) {
@@ -297,62 +302,70 @@ private:
       if(moved) break;
     }
     if(moved) std::swap(before, after);
-    if(before.needs_search && m_searches[v] < max_searches) {
-      ++m_searches[v];
-      moved = pattern_search(v) || moved;
+    if(before.wanted && m_descended[v] == 0) {
+      m_descended[v] = 1;
+      moved = descend(v) || moved;
     }
     return moved;
   }
 
-  // Compass search from try_moves()'s star: steps of a quarter of v's shortest edge in 8
-  // directions (2 along the line for a sliding vertex), the first better place taken, the
-  // step halved when none is, down to a 16th.
-  bool pattern_search(std::size_t v)
+  // Descent from try_moves()'s star: the energy's gradient by differences (along the line
+  // for a sliding vertex), then steps against it of a quarter of v's shortest edge, halved
+  // until one is kept, down to a 16th; at most `max_descent_steps` such steps.
+  bool descend(std::size_t v)
   {
     Star& before = m_before;
     Star& after = m_after;
-    static const double diagonal = 0.70710678118654752;
-    static const std::array<Vector_2d, 8> compass = { Vector_2d(1, 0),  Vector_2d(diagonal, diagonal),
-                                                      Vector_2d(0, 1),  Vector_2d(-diagonal, diagonal),
-                                                      Vector_2d(-1, 0), Vector_2d(-diagonal, -diagonal),
-                                                      Vector_2d(0, -1), Vector_2d(diagonal, -diagonal) };
-    std::array<Vector_2d, 8> directions = compass;
-    int n_directions = 8;
-    if(m_freedom[v] == SLIDING) {
-      const Vector_2d along = normalized_2d(m_xy[m_boundary_next[v]] - m_xy[m_boundary_prev[v]]);
-      directions[0] = along;
-      directions[1] = -along;
-      n_directions = 2;
-    }
-    double shortest2 = HUGE_VAL;
-    for(const auto& e : before.edges2) shortest2 = (std::min)(shortest2, (std::min)(e[0], e[1]));
-    const double first = 0.25 * std::sqrt(shortest2);
     bool moved = false;
-    for(double h = first; h >= first / 16;) {
+    for(int k = 0; k < max_descent_steps; ++k) {
+      double shortest2 = HUGE_VAL;
+      for(const auto& e : before.edges2) shortest2 = (std::min)(shortest2, (std::min)(e[0], e[1]));
+      const double h = 0.25 * std::sqrt(shortest2);
+      const Vector_2d down = -energy_gradient(v, before.energy, 1e-3 * h);
+      if(down == NULL_VECTOR) break;
+      const Vector_2d unit = normalized_2d(down);
       bool better = false;
-      for(int d = 0; d < n_directions && !better; ++d) {
-        Point_2d p = m_xy[v] + h * directions[d];
+      for(double step = h; step >= h / 16 && !better; step /= 2) {
+        Point_2d p = m_xy[v] + step * unit;
         if(m_freedom[v] == SLIDING) p = on_boundary_line(v, p);
         better = p != m_xy[v] && better_at(v, p, before, after);
       }
-      if(better) {
-        std::swap(before, after);
-        moved = true;
-      } else {
-        h /= 2;
-      }
+      if(!better) break;
+      std::swap(before, after);
+      moved = true;
     }
     return moved;
   }
 
-  Star m_before, m_after; // try_moves()'s, kept for their buffers
+  // the gradient of the star's energy at v, by forward differences of step `delta` (along the
+  // line through its boundary neighbours for a sliding vertex)
+  Vector_2d energy_gradient(std::size_t v, double energy, double delta)
+  {
+    const Point_2d start = m_xy[v];
+    std::array<Vector_2d, 2> axes = { Vector_2d(1, 0), Vector_2d(0, 1) };
+    int n_axes = 2;
+    if(m_freedom[v] == SLIDING) {
+      axes[0] = normalized_2d(m_xy[m_boundary_next[v]] - m_xy[m_boundary_prev[v]]);
+      n_axes = 1;
+    }
+    Vector_2d gradient = NULL_VECTOR;
+    for(int a = 0; a < n_axes; ++a) {
+      m_xy[v] = start + delta * axes[a];
+      star(v, m_probe);
+      gradient = gradient + ((m_probe.energy - energy) / delta) * axes[a];
+    }
+    m_xy[v] = start;
+    return gradient;
+  }
+
+  Star m_before, m_after, m_probe; // try_moves()'s, kept for their buffers
   std::vector<Point_2d>& m_xy;
   const std::vector<Quad>& m_quads;
   Vertex_quads m_quads_at;
   double m_min_edge2;
   std::vector<Freedom> m_freedom;
   std::vector<std::size_t> m_boundary_prev, m_boundary_next;
-  std::vector<unsigned char> m_searches; // pattern searches made from each vertex
+  std::vector<char> m_descended; // by vertex: 1 once it descended
 };
 
 } // namespace internal
