@@ -56,7 +56,7 @@ int main(int argc, char** argv)
   QM::Quadtree_mesher_2<K> mesher(domain);
   QM::Quad_mesh_2<Point_2> mesh;
   try {
-    mesh = mesher.run(QM::Stage::BUFFER2);
+    mesh = mesher.run(); // every stage, through the smoothing
   } catch(const QM::Meshing_error& e) {
     std::cerr << "meshing failed: " << e.what() << std::endl;
     return 1;

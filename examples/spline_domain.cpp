@@ -55,7 +55,7 @@ int main(int argc, char** argv)
   try {
     domain = QM::decompose_domain_curves(controls, options);  // keeps the control points as vertices
     QM::Quadtree_mesher_2<K> mesher(domain);
-    mesh = mesher.run(QM::Stage::BUFFER2);
+    mesh = mesher.run(); // every stage, through the smoothing
     rounds = mesher.rounds();
   } catch(const QM::Meshing_error& e) {
     std::cerr << "failed: " << e.what() << std::endl;
