@@ -120,7 +120,8 @@ private:
   // (1e-7 degrees, about 1.7e-9 in cos^2) forgives many times over
   static constexpr double bound_cos2 = 0.5 + 1e-12;
   static constexpr double max_aspect2 = 25.0;
-  // an energy gain below this (about a degree on one angle near 60) is not worth a move
+  // an energy gain below this (a few hundredths of a degree on one angle near 60) is not
+  // worth a move
   static constexpr double min_gain = 1e-3;
   static constexpr int max_descent_steps = 4;
 
