@@ -213,4 +213,32 @@ TEST(Mesh_smoothing, raises_the_bulk_quality_of_lake_superior)
   EXPECT_LT(after.max_aspect_ratio, 10.0);
 }
 
+// Shared cases (../shared/data): the bulk after the stage, as assertions on the figures
+// measured with Epick (benchmark/smoothing_table.py), less a margin for the other kernel:
+// the share of angles in [60, 120] and the largest aspect ratio, and the 99th percentile of
+// the aspect ratio at most 3.1 (3.3 to 4.4 before the stage).
+TEST(Mesh_smoothing, raises_the_bulk_quality_of_shared_cases)
+{
+  struct Case
+  {
+    const char* file;
+    double share, max_aspect_ratio;
+  };
+  const Case cases[] = { { "/river/river.poly", 0.931, 9.5 },
+                         { "/triangle_A/triangle_A.poly", 0.951, 3.9 },
+                         { "/naca0012/naca0012_sharp.poly", 0.893, 3.6 },
+                         { "/guitar/guitar.poly", 0.931, 5.5 } };
+  for(const Case& c : cases) {
+    QM::Domain_2<K> d;
+    std::string error;
+    ASSERT_TRUE(QM::IO::read_poly(std::string(QM2_SHARED_DATA_DIR) + c.file, d, &error)) << c.file << ": " << error;
+    QM::Quadtree_mesher_2<K> mesher(d);
+    const QM::Mesh_quality_2 q = QM::compute_quality(mesher.run());
+    EXPECT_TRUE(q.is_valid()) << c.file;
+    EXPECT_GE(q.share_in_60_120, c.share - 0.005) << c.file;
+    EXPECT_LE(q.max_aspect_ratio, c.max_aspect_ratio + 0.5) << c.file;
+    EXPECT_LE(q.aspect_ratio_percentiles[2], 3.1) << c.file;
+  }
+}
+
 } // namespace qm2_test_mesh_smoothing
