@@ -30,6 +30,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -244,14 +245,14 @@ public:
     const std::vector<internal::Point_2d> before = xy;
     internal::Mesh_smoothing smoothing(xy, mesh.quads, pinned_vertices(xy), 1e-6 * box_diagonal());
     m_smoothing_moves = smoothing.smooth(max_smoothing_passes);
-    Mesh smoothed = mesh;
+    std::vector<Point_2> unsmoothed = mesh.points;
     for(std::size_t v = 0; v < xy.size(); ++v)
-      if(xy[v] != before[v]) smoothed.points[v] = Point_2(xy[v].x(), xy[v].y());
+      if(xy[v] != before[v]) mesh.points[v] = Point_2(xy[v].x(), xy[v].y());
     record("smoothing", start); // the checks record their own time
-    if(check_whole_mesh(smoothed))
-      mesh = std::move(smoothed);
-    else
+    if(!check_whole_mesh(mesh)) {
+      mesh.points = std::move(unsmoothed);
       check_whole_mesh(mesh);
+    }
   }
   /// how many vertex moves the last `smooth_mesh()` kept
   std::size_t smoothing_moves() const { return m_smoothing_moves; }
@@ -451,6 +452,7 @@ private:
   // checked. Else `mesh` is left as it was.
   bool keep_grid_aligned_cells(Mesh& mesh)
   {
+    if(!corners_on_the_lattice()) return false;
     const auto start = std::chrono::steady_clock::now();
     Mesh cells = mesh;
     std::size_t removed = 0;
@@ -463,6 +465,22 @@ private:
     m_removed = { removed, 0, 0, 0 };
     m_core_vertex_size.clear();
     mesh = std::move(cells);
+    return true;
+  }
+
+  // whether every input vertex is a point of the tree's finest lattice: else no cell has it
+  // as a corner, and the cells cannot mesh the domain alone (a cheap test before the cells')
+  bool corners_on_the_lattice() const
+  {
+    const int level = m_tree->vertex_level();
+    const double side = m_tree->cell_side(level);
+    for(const auto& loop : m_loops.loops)
+      for(std::size_t v : loop.vertices) {
+        const internal::Point_2d p = internal::to_point_2d(m_domain.points[v]);
+        const std::int64_t i = std::llround((p.x() - m_tree->origin_x()) / side);
+        const std::int64_t j = std::llround((p.y() - m_tree->origin_y()) / side);
+        if(!m_traits.equal_2_object()(m_tree->lattice_point(level, i, j), m_domain.points[v])) return false;
+      }
     return true;
   }
 
@@ -674,7 +692,7 @@ private:
     // (a point cloud has no buffer, and its points are its finest vertices)
     const double finest_side = m_domain.is_point_cloud()
                                  ? 0.0
-                                 : 4e-9 * std::hypot(m_box.xmax() - m_box.xmin(), m_box.ymax() - m_box.ymin());
+                                 : 4e-9 * box_diagonal();
     m_tree = std::make_unique<Quadtree>(bounding_box(box), m_criteria.max_depth(), m_traits, finest_side);
     m_tree->set_max_leaves(m_criteria.max_cells());
     // A point cloud's mesh ends past the upper and right sides of its points' box by 4/5 to
@@ -774,7 +792,7 @@ private:
 
   double box_diagonal() const
   {
-    return std::sqrt(CGAL::square(m_box.xmax() - m_box.xmin()) + CGAL::square(m_box.ymax() - m_box.ymin()));
+    return std::hypot(m_box.xmax() - m_box.xmin(), m_box.ymax() - m_box.ymin());
   }
 
   // adds the round's figures and shows them to the observer

@@ -72,6 +72,29 @@ inline int corner_of(const Quad_vertices& Q, std::size_t v)
   return c;
 }
 
+/// calls `f(a, b)` for every boundary edge a -> b of a quad mesh (the only one of a -> b and
+/// b -> a: the mesh is on its left), by increasing a (`quads_at`: the quads at each vertex)
+template <class F>
+void for_each_boundary_edge(const std::vector<std::array<std::size_t, 4>>& quads, const Vertex_quads& quads_at,
+                            std::size_t n_points, F&& f)
+{
+  // both a -> b and b -> a are edges of quads at a
+  std::vector<std::array<std::size_t, 2>> around; // a's next and previous vertex in each quad at a
+  for(std::size_t a = 0; a < n_points; ++a) {
+    around.clear();
+    for(std::size_t q : quads_at[a]) {
+      const int c = corner_of(quads[q], a);
+      around.push_back({ quads[q][(c + 1) % 4], quads[q][(c + 3) % 4] });
+    }
+    for(const auto& e : around) {
+      const std::size_t b = e[0];
+      std::size_t uses = 0;
+      for(const auto& g : around) uses += (g[0] == b ? 1 : 0) + (g[1] == b ? 1 : 0);
+      if(uses == 1) f(a, b);
+    }
+  }
+}
+
 /// the oriented boundary loops of a quad mesh whose boundary vertices all have two boundary
 /// edges (the core after the clearance): each loop has the mesh on its left
 /// (`quads_at`: the quads at each vertex)
@@ -79,25 +102,12 @@ inline std::vector<std::vector<std::size_t>>
 mesh_boundary_cycles(const std::vector<std::array<std::size_t, 4>>& quads, const Vertex_quads& quads_at,
                      std::size_t n_points)
 {
-  // edge a -> b lies on the boundary if it is the only one of a -> b and b -> a; both are
-  // edges of quads at a. Where several leave one vertex, the largest target wins (they cannot:
-  // see the precondition).
+  // Where several boundary edges leave one vertex, the largest target wins (they cannot: see
+  // the precondition).
   std::vector<std::size_t> next(n_points, std::size_t(-1));
-  std::vector<std::array<std::size_t, 2>> around; // a's next and previous vertex in each quad at a
-  for(std::size_t a = 0; a < n_points; ++a) {
-    around.clear();
-    for(std::size_t q : quads_at[a]) {
-      int c = 0;
-      while(quads[q][c] != a) ++c;
-      around.push_back({ quads[q][(c + 1) % 4], quads[q][(c + 3) % 4] });
-    }
-    for(const auto& e : around) {
-      const std::size_t b = e[0];
-      std::size_t uses = 0;
-      for(const auto& f : around) uses += (f[0] == b ? 1 : 0) + (f[1] == b ? 1 : 0);
-      if(uses == 1 && (next[a] == std::size_t(-1) || b > next[a])) next[a] = b;
-    }
-  }
+  for_each_boundary_edge(quads, quads_at, n_points, [&](std::size_t a, std::size_t b) {
+    if(next[a] == std::size_t(-1) || b > next[a]) next[a] = b;
+  });
   std::vector<std::vector<std::size_t>> cycles;
   std::vector<bool> seen(n_points, false);
   for(std::size_t v = 0; v < n_points; ++v) {

@@ -131,24 +131,12 @@ private:
   void find_boundary()
   {
     std::vector<int> boundary_edges(m_xy.size(), 0);
-    std::vector<std::array<std::size_t, 2>> around;
-    for(std::size_t a = 0; a < m_xy.size(); ++a) {
-      around.clear();
-      for(std::size_t q : m_quads_at[a]) {
-        const int c = corner_of(m_quads[q], a);
-        around.push_back({ m_quads[q][(c + 1) % 4], m_quads[q][(c + 3) % 4] });
-      }
-      for(const auto& e : around) {
-        const std::size_t b = e[0];
-        int uses = 0;
-        for(const auto& f : around) uses += (f[0] == b ? 1 : 0) + (f[1] == b ? 1 : 0);
-        if(uses != 1) continue;
-        ++boundary_edges[a];
-        ++boundary_edges[b];
-        m_boundary_next[a] = b;
-        m_boundary_prev[b] = a;
-      }
-    }
+    for_each_boundary_edge(m_quads, m_quads_at, m_xy.size(), [&](std::size_t a, std::size_t b) {
+      ++boundary_edges[a];
+      ++boundary_edges[b];
+      m_boundary_next[a] = b;
+      m_boundary_prev[b] = a;
+    });
     for(std::size_t v = 0; v < m_xy.size(); ++v) {
       if(boundary_edges[v] == 0) continue;
       m_freedom[v] = boundary_edges[v] == 2 && on_line_between(v) ? SLIDING : PINNED;
