@@ -352,7 +352,7 @@ void fill_report(const Options& opt, const QM::Domain_2<K>& domain, QM::Stage la
   if(last >= QM::Stage::TEMPLATES)
     add_buffer(opt, mesher, report);
   if(last >= QM::Stage::SMOOTHING)
-    report["smoothing"] = { { "moves", mesher.smoothing_moves() } };
+    report["smoothing"] = { { "moves", mesher.smoothing_moves() }, { "vertex_splits", mesher.vertex_splits() } };
   report["points_as_vertices"] = mesher.point_vertices().size();
   report["max_aspect_ratio_at_points"] = QM::max_aspect_ratio_around(mesh, mesher.point_vertices());
   report["quadtree_depth"] = tree.depth();
@@ -547,7 +547,8 @@ void add_options(CLI::App& app, Options& opt, std::array<CLI::Option*, 2>& splin
                  "keeps the core mesh clear of the boundary (paper §4.3, Fig. 3(c)); 'templates' opens the "
                  "core's notches and cuts its corners (§4.4); 'buffer1' adds the first buffer layer (§4.5); 'buffer2' "
                  "the second, reaching the boundary (§4.6); 'smoothing' (the default for domains) moves "
-                 "vertices to bring angles nearer 90 degrees, keeping every angle in [45, 135] in it")
+                 "vertices to bring angles nearer 90 degrees and splits interior vertices of 3 or 6 quads, "
+                 "keeping every angle in [45, 135] in it")
     ->check(CLI::IsMember(stage_names()));
   app.add_flag("--merge-duplicates", opt.merge_duplicates,
                "in a point file (.node, x y), merge points given twice and report how many, "

@@ -21,6 +21,7 @@
 #include <CGAL/Quad_mesher_2/internal/grid_aligned_domain.h>
 #include <CGAL/Quad_mesher_2/internal/lattice_region.h>
 #include <CGAL/Quad_mesher_2/internal/mesh_smoothing.h>
+#include <CGAL/Quad_mesher_2/internal/vertex_splits.h>
 #include <CGAL/Quad_mesher_2/internal/quadtree_sizing.h>
 #include <CGAL/Quad_mesher_2/internal/refinement_rounds.h>
 
@@ -234,8 +235,11 @@ public:
   /// Stage 7 (domains only, not in the paper) on `mesh`, a valid result of the buffer stages:
   /// its vertices move towards places that bring its angles nearer 90°, each move kept only
   /// under the bound of `internal::Mesh_smoothing`; input vertices and isolated points stay,
-  /// and boundary vertices move only along straight runs of the boundary. The whole-mesh
-  /// check runs again on the result, and `mesh` is left as it was if that would fail it.
+  /// and boundary vertices move only along straight runs of the boundary. Then interior
+  /// vertices of three or six quads split where that keeps the bound (`internal::Vertex_splits`:
+  /// new vertices and quads are appended), and the mesh is smoothed again.
+  /// The whole-mesh check runs again on the result, and `mesh` is left as it was if that
+  /// would fail it.
   void smooth_mesh(Mesh& mesh)
   {
     const auto start = std::chrono::steady_clock::now();
@@ -243,19 +247,26 @@ public:
     xy.reserve(mesh.points.size());
     for(const Point_2& p : mesh.points) xy.push_back(internal::to_point_2d(p));
     const std::vector<internal::Point_2d> before = xy;
-    internal::Mesh_smoothing smoothing(xy, mesh.quads, pinned_vertices(xy), 1e-6 * box_diagonal());
-    m_smoothing_moves = smoothing.smooth(max_smoothing_passes);
-    std::vector<Point_2> unsmoothed = mesh.points;
+    std::vector<char> pinned = pinned_vertices(xy);
+    const double min_edge = 1e-6 * box_diagonal();
+    Mesh unsmoothed = mesh;
+    m_smoothing_moves = internal::Mesh_smoothing(xy, mesh.quads, pinned, min_edge).smooth(max_smoothing_passes);
+    m_vertex_splits = internal::Vertex_splits(xy, mesh.quads, pinned, min_edge).split_all();
+    pinned.resize(xy.size(), 0);
+    m_smoothing_moves += internal::Mesh_smoothing(xy, mesh.quads, pinned, min_edge).smooth(max_smoothing_passes);
+    mesh.points.resize(xy.size(), Point_2(0, 0));
     for(std::size_t v = 0; v < xy.size(); ++v)
-      if(xy[v] != before[v]) mesh.points[v] = Point_2(xy[v].x(), xy[v].y());
+      if(v >= before.size() || xy[v] != before[v]) mesh.points[v] = Point_2(xy[v].x(), xy[v].y());
     record("smoothing", start); // the checks record their own time
     if(!check_whole_mesh(mesh)) {
-      mesh.points = std::move(unsmoothed);
+      mesh = std::move(unsmoothed);
       check_whole_mesh(mesh);
     }
   }
   /// how many vertex moves the last `smooth_mesh()` kept
   std::size_t smoothing_moves() const { return m_smoothing_moves; }
+  /// how many vertex splits (`internal::Vertex_splits`) the last `smooth_mesh()` made
+  std::size_t vertex_splits() const { return m_vertex_splits; }
   static constexpr int max_smoothing_passes = 4;
 
   /// Runs every stage the input has (up to `last_stage(domain)`: the whole domain, or a point
@@ -831,6 +842,7 @@ private:
   std::optional<Mesh_quality_2> m_quality;
   std::vector<std::size_t> m_lost_points; // by anchored point: see clear_buffer_zone()
   std::size_t m_smoothing_moves = 0;
+  std::size_t m_vertex_splits = 0;
   bool m_grid_aligned_candidate = false; // an axis-parallel domain with no isolated point
   std::vector<std::size_t> m_point_names; // the input index of each anchored point
   typedef internal::Refinement_rounds<Rounds_end> Rounds;

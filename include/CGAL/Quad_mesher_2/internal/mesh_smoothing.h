@@ -56,12 +56,33 @@ struct Smoothing_quad_shape
     const auto [shortest, longest] = std::minmax_element(len2.begin(), len2.end());
     aspect2 = *shortest > 0 ? *longest / *shortest : HUGE_VAL;
   }
+
+  // an angle's squared cosine at 45 or 135 degrees, and the rounding the verifier's slack
+  // (1e-7 degrees, about 1.7e-9 in cos^2) forgives many times over
+  static constexpr double bound_cos2 = 0.5 + 1e-12;
+  static constexpr double max_aspect2 = 25.0;
+
+  /// strictly convex, every angle in [45, 135] and the aspect ratio at most 5
+  bool within_bound() const
+  {
+    return convex && aspect2 <= max_aspect2 && *std::max_element(cos2.begin(), cos2.end()) <= bound_cos2;
+  }
+
+  /// an angle outside [60, 120] or an aspect ratio over 3: the quads the smoothing is for
+  bool needs_smoothing() const { return aspect2 > 9.0 || *std::max_element(cos2.begin(), cos2.end()) > 0.25; }
+
+  /// the smoothing's energy of the quad: over its corners, cos^2 plus three times its excess
+  /// over 1/4 (angles outside [60, 120] weigh most); plus log(r^2 / 9) for an aspect ratio r over 3
+  double energy() const
+  {
+    double e = 0;
+    for(double c2 : cos2) e += c2 + 3.0 * (std::max)(0.0, c2 - 0.25);
+    return aspect2 > 9.0 ? e + std::log(aspect2 / 9.0) : e;
+  }
 };
 
 /// The smoothing of a whole quad mesh (see the file comment). A move is kept only if it
-/// lowers the energy of the vertex's quads (the sum over their corners of cos^2, plus three
-/// times the excess of cos^2 over 1/4: angles outside [60, 120] weigh most; plus, for a quad
-/// whose aspect ratio r is over 3, log(r^2 / 9)) and:
+/// lowers the energy of the vertex's quads (`Smoothing_quad_shape::energy()`) and:
 /// - every quad at the vertex stays strictly convex, and the corners it winds once around it
 ///   (no fold);
 /// - no angle in [45, 135] leaves it, and none outside goes further out;
@@ -94,7 +115,7 @@ public:
     // first the vertices of quads the stage is for (most of a mesh is not: one look per quad
     // instead of one per corner)
     for(const Quad& Q : m_quads)
-      if(needs_smoothing(Smoothing_quad_shape(corners(Q))))
+      if(Smoothing_quad_shape(corners(Q)).needs_smoothing())
         for(std::size_t v : Q) active[v] = m_freedom[v] != PINNED;
     std::size_t moves = 0;
     for(int pass = 0; pass < passes; ++pass) {
@@ -116,10 +137,8 @@ public:
 private:
   enum Freedom : unsigned char { PINNED, FREE, SLIDING };
   static constexpr std::size_t none = std::size_t(-1);
-  // an angle's squared cosine at 45 or 135 degrees, and the rounding the verifier's slack
-  // (1e-7 degrees, about 1.7e-9 in cos^2) forgives many times over
-  static constexpr double bound_cos2 = 0.5 + 1e-12;
-  static constexpr double max_aspect2 = 25.0;
+  static constexpr double bound_cos2 = Smoothing_quad_shape::bound_cos2;
+  static constexpr double max_aspect2 = Smoothing_quad_shape::max_aspect2;
   // an energy gain below this (a few hundredths of a degree on one angle near 60) is not
   // worth a move
   static constexpr double min_gain = 1e-3;
@@ -159,14 +178,6 @@ private:
     return { m_xy[Q[0]], m_xy[Q[1]], m_xy[Q[2]], m_xy[Q[3]] };
   }
 
-  // an angle outside [60, 120] or an aspect ratio over 3
-  static bool needs_smoothing(const Smoothing_quad_shape& shape)
-  {
-    return shape.aspect2 > 9.0 || *std::max_element(shape.cos2.begin(), shape.cos2.end()) > 0.25;
-  }
-
-  static double corner_energy(double cos2) { return cos2 + 3.0 * (std::max)(0.0, cos2 - 0.25); }
-
   // the quads at v as they are now, and their energy
   struct Star
   {
@@ -187,9 +198,8 @@ private:
       const Quad& Q = m_quads[q];
       s.shapes.emplace_back(corners(Q));
       const Smoothing_quad_shape& shape = s.shapes.back();
-      for(double c2 : shape.cos2) s.energy += corner_energy(c2);
-      if(shape.aspect2 > 9.0) s.energy += std::log(shape.aspect2 / 9.0);
-      s.wanted = s.wanted || needs_smoothing(shape);
+      s.energy += shape.energy();
+      s.wanted = s.wanted || shape.needs_smoothing();
       const int c = corner_of(Q, v);
       s.edges2.push_back(
           { (m_xy[Q[(c + 1) % 4]] - m_xy[v]).squared_length(), (m_xy[Q[(c + 3) % 4]] - m_xy[v]).squared_length() });
