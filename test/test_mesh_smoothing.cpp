@@ -127,7 +127,8 @@ void expect_smoothing_keeps_the_bound(const Mesh& buffer2, const Mesh& smoothed,
         EXPECT_LE(std::abs(b - 90), std::abs(a - 90) + 1e-7) << name << ": quad " << q << " corner " << c;
     }
   }
-  EXPECT_NEAR(area_after, area_before, 1e-12 * std::abs(area_before)) << name;
+  // slides along the boundary are on its lines to a relative 1e-12, and the sums round
+  EXPECT_NEAR(area_after, area_before, 1e-10 * std::abs(area_before)) << name;
   const QM::Mesh_quality_2 before = QM::compute_quality(buffer2), after = QM::compute_quality(smoothed);
   EXPECT_TRUE(after.is_valid()) << name;
   EXPECT_EQ(after.number_of_near_duplicate_vertices, 0u) << name;
@@ -277,7 +278,8 @@ TEST(Mesh_smoothing, leaves_no_sliver_at_close_corners_or_in_a_thin_rectangle)
 }
 
 // Lake Superior (the paper's case, bundled): the bulk the stage is for, as assertions on its
-// figures (measured 95.9% of angles in [60, 120] and aspect ratios up to 7.3 with Epick).
+// figures (measured 97.3% of angles in [60, 120] and aspect ratios up to 11.0 with Epick: the
+// quad that spans the 15 degree input corner; every other is at most 7.7).
 TEST(Mesh_smoothing, raises_the_bulk_quality_of_lake_superior)
 {
   QM::Domain_2<K> d;
@@ -289,9 +291,9 @@ TEST(Mesh_smoothing, raises_the_bulk_quality_of_lake_superior)
   expect_smoothing_keeps_the_bound(buffer2, smoothed, "lake_superior");
   const QM::Mesh_quality_2 before = QM::compute_quality(buffer2), after = QM::compute_quality(smoothed);
   EXPECT_LT(before.share_in_60_120, 0.90);
-  EXPECT_GT(after.share_in_60_120, 0.955);
+  EXPECT_GT(after.share_in_60_120, 0.97);
   EXPECT_GT(before.max_aspect_ratio, 100.0);
-  EXPECT_LT(after.max_aspect_ratio, 10.0);
+  EXPECT_LT(after.max_aspect_ratio, 11.5);
 }
 
 // Shared cases (../shared/data): the bulk after the stage, as assertions on the figures
@@ -305,10 +307,10 @@ TEST(Mesh_smoothing, raises_the_bulk_quality_of_shared_cases)
     const char* file;
     double share, max_aspect_ratio;
   };
-  const Case cases[] = { { "/river/river.poly", 0.959, 9.5 },
-                         { "/triangle_A/triangle_A.poly", 0.964, 3.3 },
-                         { "/naca0012/naca0012_sharp.poly", 0.958, 3.1 },
-                         { "/guitar/guitar.poly", 0.962, 5.0 } };
+  const Case cases[] = { { "/river/river.poly", 0.974, 9.4 },
+                         { "/triangle_A/triangle_A.poly", 0.977, 3.2 },
+                         { "/naca0012/naca0012_sharp.poly", 0.973, 4.1 },
+                         { "/guitar/guitar.poly", 0.977, 5.5 } };
   for(const Case& c : cases) {
     QM::Domain_2<K> d;
     std::string error;
