@@ -205,18 +205,25 @@ TEST(Mesh_smoothing, keeps_the_bound_on_bundled_random_polygons)
   }
 }
 
-// A 6 x 6 grid whose middle quad collapsed along its diagonal: the merged vertex has six quads,
-// the quad's other two corners three each. The split undoes it: every interior vertex has four
-// quads again, every angle in [45, 135], the area the same.
+// A 6 x 6 grid whose quad at (2, 2) collapsed along its diagonal: its corners u = (2, 2) and
+// w = (3, 3) merged into u, at the quad's centre (w stays, in no quad).
+const std::size_t collapsed_u = 2 * 7 + 2, collapsed_w = 3 * 7 + 3;
+void collapsed_grid(std::vector<P2d>& xy, std::vector<QM::internal::Quad_vertices>& quads)
+{
+  unit_grid(6, xy, quads);
+  xy[collapsed_u] = P2d(2.5, 2.5);
+  quads.erase(quads.begin() + (2 * 6 + 2));
+  for(auto& q : quads) std::replace(q.begin(), q.end(), collapsed_w, collapsed_u);
+}
+
+// The collapsed grid's merged vertex has six quads, the quad's other two corners three each.
+// The split undoes it: every interior vertex has four quads again, every angle in [45, 135],
+// the area the same.
 TEST(Vertex_splits, undoes_a_collapsed_quad_of_a_grid)
 {
   std::vector<P2d> xy;
   std::vector<QM::internal::Quad_vertices> quads;
-  unit_grid(6, xy, quads);
-  const std::size_t u = 2 * 7 + 2, w = 3 * 7 + 3; // opposite corners of the quad at (2, 2)
-  xy[u] = P2d(2.5, 2.5);
-  quads.erase(quads.begin() + (2 * 6 + 2));
-  for(auto& q : quads) std::replace(q.begin(), q.end(), w, u);
+  collapsed_grid(xy, quads);
   const double area_before = total_area(xy, quads);
   ASSERT_GT(worst_deviation(xy, quads), 30.0); // a corner of 135 degrees, beside the merged vertex
 
@@ -231,7 +238,7 @@ TEST(Vertex_splits, undoes_a_collapsed_quad_of_a_grid)
     for(std::size_t v : q) ++valence[v];
   for(std::size_t v = 0; v < xy.size(); ++v) {
     const bool interior = xy[v].x() > 0 && xy[v].x() < 6 && xy[v].y() > 0 && xy[v].y() < 6;
-    if(interior && v != w) {
+    if(interior && v != collapsed_w) {
       EXPECT_EQ(valence[v], 4) << "vertex " << v << " at " << xy[v];
     }
   }
@@ -248,13 +255,9 @@ TEST(Vertex_splits, leaves_a_grid_and_a_pinned_vertex)
 
   xy.clear();
   quads.clear();
-  unit_grid(6, xy, quads);
-  const std::size_t u = 2 * 7 + 2, w = 3 * 7 + 3;
-  xy[u] = P2d(2.5, 2.5);
-  quads.erase(quads.begin() + (2 * 6 + 2));
-  for(auto& q : quads) std::replace(q.begin(), q.end(), w, u);
+  collapsed_grid(xy, quads);
   std::vector<char> pinned(xy.size(), 0);
-  pinned[u] = 1;
+  pinned[collapsed_u] = 1;
   EXPECT_EQ(QM::internal::Vertex_splits(xy, quads, pinned, 1e-6).split_all(), 0u);
 }
 
