@@ -248,7 +248,10 @@ public:
     for(const Point_2& p : mesh.points) xy.push_back(internal::to_point_2d(p));
     const std::vector<internal::Point_2d> before = xy;
     std::vector<char> pinned = pinned_vertices(xy);
-    const double min_edge = 1e-6 * box_diagonal();
+    // ten times the distance under which vertices are near duplicates (the whole-mesh check's and
+    // the verifier's 1e-8 of the diagonal), below the finest cells of deep trees (30P30N's,
+    // depth 22: about 1.7e-7 of the diagonal), which a larger floor would freeze
+    const double min_edge = 1e-7 * box_diagonal();
     Mesh unsmoothed = mesh;
     m_smoothing_moves = internal::Mesh_smoothing(xy, mesh.quads, pinned, min_edge).smooth(max_smoothing_passes);
     m_vertex_splits = internal::Vertex_splits(xy, mesh.quads, pinned, min_edge).split_all();
