@@ -21,9 +21,9 @@
 #include <CGAL/Quad_mesher_2/internal/grid_aligned_domain.h>
 #include <CGAL/Quad_mesher_2/internal/lattice_region.h>
 #include <CGAL/Quad_mesher_2/internal/mesh_smoothing.h>
-#include <CGAL/Quad_mesher_2/internal/vertex_splits.h>
 #include <CGAL/Quad_mesher_2/internal/quadtree_sizing.h>
 #include <CGAL/Quad_mesher_2/internal/refinement_rounds.h>
+#include <CGAL/Quad_mesher_2/internal/vertex_splits.h>
 
 #include <CGAL/Bbox_2.h>
 

@@ -142,8 +142,6 @@ public:
 private:
   enum Freedom : unsigned char { PINNED, FREE, SLIDING };
   static constexpr std::size_t none = std::size_t(-1);
-  static constexpr double bound_cos2 = Smoothing_quad_shape::bound_cos2;
-  static constexpr double max_aspect2 = Smoothing_quad_shape::max_aspect2;
   // an energy gain below this (a few hundredths of a degree on one angle near 60) is not
   // worth a move
   static constexpr double min_gain = 1e-3;
@@ -219,8 +217,8 @@ private:
       const Smoothing_quad_shape& a = after.shapes[k];
       if(!a.convex) return false;
       for(int c = 0; c < 4; ++c)
-        if(a.cos2[c] > (std::max)(b.cos2[c], bound_cos2)) return false;
-      if(a.aspect2 > (std::max)(b.aspect2, max_aspect2)) return false;
+        if(a.cos2[c] > (std::max)(b.cos2[c], Smoothing_quad_shape::bound_cos2)) return false;
+      if(a.aspect2 > (std::max)(b.aspect2, Smoothing_quad_shape::max_aspect2)) return false;
       for(int side = 0; side < 2; ++side)
         if(after.edges2[k][side] < (std::min)(before.edges2[k][side], m_min_edge2)) return false;
     }

@@ -167,30 +167,28 @@ private:
   // unless that keeps the bound.
   bool split(std::size_t v, const Ring& r, std::size_t i, std::size_t j)
   {
-    {
-      std::vector<std::size_t> movable = room_makers(v, r);
-      std::vector<std::size_t> region = quads_at_any(movable);
-      const double energy_before = energy_of(region);
-      std::vector<Point_2d> kept;
-      for(std::size_t w : movable) kept.push_back(m_xy[w]);
-      const std::size_t v2 = m_xy.size();
-      connect(v, v2, r, i, j);
-      movable.push_back(v2);
-      region.push_back(m_quads.size() - 1);
-      // v1 towards n_i+1 .. n_j-1, v2 away: along the normal of a -> b, turned left
-      const Point_2d& a = m_xy[r.neighbours[i]];
-      const Point_2d& b = m_xy[r.neighbours[j]];
-      const Vector_2d side = 0.5 * length_2d(a - b) * normalized_2d((a - b).perpendicular(COUNTERCLOCKWISE));
-      for(double offset : { 0.3, 0.5 }) {
-        for(std::size_t m = 0; m < kept.size(); ++m) m_xy[movable[m]] = kept[m];
-        m_xy[v] = kept[0] + offset * side;
-        m_xy[v2] = kept[0] - offset * side;
-        relax(movable);
-        if(keeps_the_bound(region) && energy_of(region) <= energy_before) return true;
-      }
+    std::vector<std::size_t> movable = room_makers(v, r);
+    std::vector<std::size_t> region = quads_at_any(movable);
+    const double energy_before = energy_of(region);
+    std::vector<Point_2d> kept;
+    for(std::size_t w : movable) kept.push_back(m_xy[w]);
+    const std::size_t v2 = m_xy.size();
+    connect(v, v2, r, i, j);
+    movable.push_back(v2);
+    region.push_back(m_quads.size() - 1);
+    // v1 towards n_i+1 .. n_j-1, v2 away: along the normal of a -> b, turned left
+    const Point_2d& a = m_xy[r.neighbours[i]];
+    const Point_2d& b = m_xy[r.neighbours[j]];
+    const Vector_2d side = 0.5 * length_2d(a - b) * normalized_2d((a - b).perpendicular(COUNTERCLOCKWISE));
+    for(double offset : { 0.3, 0.5 }) {
       for(std::size_t m = 0; m < kept.size(); ++m) m_xy[movable[m]] = kept[m];
-      disconnect(v, v2, r, r.neighbours[i], r.neighbours[j]);
+      m_xy[v] = kept[0] + offset * side;
+      m_xy[v2] = kept[0] - offset * side;
+      relax(movable);
+      if(keeps_the_bound(region) && energy_of(region) <= energy_before) return true;
     }
+    for(std::size_t m = 0; m < kept.size(); ++m) m_xy[movable[m]] = kept[m];
+    disconnect(v, v2, r, r.neighbours[i], r.neighbours[j]);
     return false;
   }
 
@@ -271,30 +269,30 @@ private:
   }
 
   // every quad of `region` within the bound, with edges no shorter than the minimum, and no
-  // interior vertex of theirs folded
+  // interior vertex of theirs folded (each looked at once)
   bool keeps_the_bound(const std::vector<std::size_t>& region) const
   {
+    std::vector<std::size_t> corners_of_region;
     for(std::size_t q : region) {
       const Quad& Q = m_quads[q];
       if(!Smoothing_quad_shape(corners(Q)).within_bound()) return false;
       for(int c = 0; c < 4; ++c)
         if((m_xy[Q[(c + 1) % 4]] - m_xy[Q[c]]).squared_length() < m_min_edge2) return false;
+      corners_of_region.insert(corners_of_region.end(), Q.begin(), Q.end());
     }
-    for(std::size_t q : region)
-      for(std::size_t w : m_quads[q])
-        if(folded(w)) return false;
-    return true;
+    std::sort(corners_of_region.begin(), corners_of_region.end());
+    corners_of_region.erase(std::unique(corners_of_region.begin(), corners_of_region.end()), corners_of_region.end());
+    return std::none_of(corners_of_region.begin(), corners_of_region.end(), [&](std::size_t w) { return folded(w); });
   }
 
   // whether the corners at an interior vertex w fail to wind once around it (a boundary
   // vertex's quads do not close: the whole-mesh check judges those)
   bool folded(std::size_t w) const
   {
-    Ring r;
-    if(!interior(w) || !ring_of(w, r)) return false;
+    if(!interior(w)) return false;
     std::vector<std::pair<Point_2d, Point_2d>> wedges;
-    for(std::size_t l = 0; l < r.quads.size(); ++l)
-      wedges.emplace_back(m_xy[r.neighbours[l]], m_xy[r.neighbours[(l + 1) % r.quads.size()]]);
+    for(std::size_t q : m_quads_at[w])
+      wedges.emplace_back(m_xy[next_of(m_quads[q], w)], m_xy[prev_of(m_quads[q], w)]);
     return times_wedges_cover(m_xy[w], wedges) != 1;
   }
 
