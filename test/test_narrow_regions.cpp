@@ -101,6 +101,36 @@ TEST(Narrow_regions, a_needle_is_narrow_beyond_its_corner_zone)
   EXPECT_LE(corner.quadtree().depth(), 8);
 }
 
+// A slit of the outside 0.01 wide between two prongs 1 wide: its walls face each other
+// across no domain, so the cells beside it need only be no wider than the slit (none spans
+// it), not a quarter of it as across a channel of the domain; and the whole pipeline meshes
+// it within the bound. Sizing by a quarter of the slit made the bird's toes twice as fine.
+TEST(Narrow_regions, a_slit_of_the_outside_needs_cells_as_wide_as_it)
+{
+  const double slit = 0.01;
+  QM::Domain_2<K> d;
+  d.points = { K::Point_2(0, 0),        K::Point_2(2 + slit, 0), K::Point_2(2 + slit, 5), K::Point_2(1 + slit, 5),
+               K::Point_2(1 + slit, 1), K::Point_2(1, 1),        K::Point_2(1, 5),        K::Point_2(0, 5) };
+  close_loop(d, 0);
+  QM::Quadtree_mesher_2<K> tree_only(d, quadtree_only());
+  tree_only.run(QM::Stage::QUADTREE);
+  const auto& tree = tree_only.quadtree();
+  for(int k = 0; k <= 20; ++k) { // beside the slit, away from its ends' corners
+    const double y = 2.5 + k * 0.05;
+    for(double x : { 1 - slit / 4, 1 + slit + slit / 4 }) {
+      const double side = tree.cell_side(tree.locate(K::Point_2(x, y)).level);
+      EXPECT_LE(side, slit) << "at (" << x << ", " << y << ")";
+      EXPECT_GT(side, slit / 2) << "at (" << x << ", " << y << ")";
+    }
+  }
+  QM::Quadtree_mesher_2<K> mesher(d);
+  auto mesh = mesher.run(QM::Stage::SMOOTHING);
+  EXPECT_TRUE(qm2_checks::is_conforming(mesh));
+  const auto range = qm2_checks::angle_range(mesh);
+  EXPECT_GE(range.min, 45 - 1e-7);
+  EXPECT_LE(range.max, 135 + 1e-7);
+}
+
 // A thin rectangle whose long sides are single segments: seen from its corners, the far side
 // is the near side's neighbour along the loop, so a walk that gave up after its first sample
 // never found the gap. Both long sides' whole length needs more than two cells across, and

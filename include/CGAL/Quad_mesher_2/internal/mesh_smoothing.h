@@ -19,6 +19,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -91,7 +92,9 @@ struct Smoothing_quad_shape
 /// - every quad at the vertex stays strictly convex, and the corners it winds once around it
 ///   (no fold);
 /// - no angle in [45, 135] leaves it, and none outside goes further out;
-/// - no quad's aspect ratio rises above 5, or above its own where it was over 5;
+/// - no quad's aspect ratio rises above 5, or above the worst of the vertex's quads where
+///   that was over 5 (the worst of the mesh never rises; a sliver can pass some of its
+///   length to a neighbour);
 /// - no edge at the vertex becomes shorter than `min_edge`, or than it was where it was.
 class Mesh_smoothing
 {
@@ -165,15 +168,19 @@ private:
     }
   }
 
-  // whether v lies on the segment between its boundary neighbours, to a relative 1e-12:
-  // sliding along it then moves the boundary by rounding only
+  // whether v lies on the segment between its boundary neighbours, within 1e-12 of its
+  // length or the rounding of the coordinates (the larger far from the origin, where map
+  // projections put domains): sliding along it then moves the boundary by rounding only
   bool on_line_between(std::size_t v) const
   {
     const Point_2d& a = m_xy[m_boundary_prev[v]];
     const Point_2d& b = m_xy[m_boundary_next[v]];
     const Vector_2d ab = b - a, av = m_xy[v] - a;
     const double cross = CGAL::determinant(ab, av), dot = CGAL::scalar_product(ab, av);
-    return std::abs(cross) <= 1e-12 * ab.squared_length() && dot > 0 && dot < ab.squared_length();
+    const double magnitude = (std::max)({ std::abs(a.x()), std::abs(a.y()), std::abs(b.x()), std::abs(b.y()) });
+    const double off_line = (std::max)(1e-12 * std::sqrt(ab.squared_length()),
+                                       16 * std::numeric_limits<double>::epsilon() * magnitude);
+    return cross * cross <= off_line * off_line * ab.squared_length() && dot > 0 && dot < ab.squared_length();
   }
 
   std::array<Point_2d, 4> corners(const Quad& Q) const
@@ -212,13 +219,15 @@ private:
   // whether the star after a move (`after`) keeps the bound that `before` had
   bool keeps_the_bound(const Star& before, const Star& after) const
   {
+    double worst_aspect2 = Smoothing_quad_shape::max_aspect2;
+    for(const Smoothing_quad_shape& b : before.shapes) worst_aspect2 = (std::max)(worst_aspect2, b.aspect2);
     for(std::size_t k = 0; k < before.shapes.size(); ++k) {
       const Smoothing_quad_shape& b = before.shapes[k];
       const Smoothing_quad_shape& a = after.shapes[k];
       if(!a.convex) return false;
       for(int c = 0; c < 4; ++c)
         if(a.cos2[c] > (std::max)(b.cos2[c], Smoothing_quad_shape::bound_cos2)) return false;
-      if(a.aspect2 > (std::max)(b.aspect2, Smoothing_quad_shape::max_aspect2)) return false;
+      if(a.aspect2 > worst_aspect2) return false;
       for(int side = 0; side < 2; ++side)
         if(after.edges2[k][side] < (std::min)(before.edges2[k][side], m_min_edge2)) return false;
     }
@@ -239,9 +248,18 @@ private:
     return times_wedges_cover(m_xy[v], wedges) == 1;
   }
 
+  // The places try_moves() tries, `count` of them.
+  struct Targets
+  {
+    std::array<Point_2d, 3> places;
+    int count = 0;
+  };
+
   // Where v's quads would be parallelograms, on average (for each quad at v, its two
-  // neighbours' sum less the opposite corner), and the mean of its edge neighbours.
-  std::array<Point_2d, 2> targets(std::size_t v) const
+  // neighbours' sum less the opposite corner), the mean of its edge neighbours, and for a
+  // sliding vertex the midpoint of its boundary neighbours: the two others leave uneven
+  // boundary edges where the quads behind them are long.
+  Targets targets(std::size_t v) const
   {
     Vector_2d parallelogram = NULL_VECTOR, neighbours = NULL_VECTOR;
     double n = 0;
@@ -253,7 +271,11 @@ private:
       neighbours = neighbours + next + prev;
       ++n;
     }
-    return { ORIGIN + parallelogram / n, ORIGIN + neighbours / (2 * n) };
+    Targets t;
+    t.places[t.count++] = ORIGIN + parallelogram / n;
+    t.places[t.count++] = ORIGIN + neighbours / (2 * n);
+    if(m_freedom[v] == SLIDING) t.places[t.count++] = CGAL::midpoint(m_xy[m_boundary_prev[v]], m_xy[m_boundary_next[v]]);
+    return t;
   }
 
   // the point of the line through v's boundary neighbours nearest to p, kept a tenth of the
@@ -292,7 +314,9 @@ private:
     star(v, before);
     if(!before.wanted) return false;
     bool moved = false;
-    for(const Point_2d& target : targets(v)) {
+    const Targets t = targets(v);
+    for(int k = 0; k < t.count; ++k) {
+      const Point_2d& target = t.places[k];
       for(double step : { 1.0, 0.5, 0.25 }) {
         Point_2d p = along_2d(start, target, step);
         if(m_freedom[v] == SLIDING) p = on_boundary_line(v, p);

@@ -25,13 +25,17 @@ namespace Quad_mesher_2 {
 namespace internal {
 
 // Narrow regions (paper §4.2): wherever two parts of the boundary face each other across a
-// gap of width w, the quadtree must have more than two cells across the gap, or a loop could
-// merge with another or vanish when the buffer zone is cleared. We sample the boundary, find
-// for each sample the nearest boundary point that is not just its neighbour along the same
-// loop, and ask for cells of side <= w/4 at the sample, at that nearest point and halfway
-// between them. A size field: measured in doubles (the approximate kernel); what it decides on
-// the input, which segments are neighbours and which corners are convex, it decides on vertex
-// indices and with the traits' exact orientation.
+// gap of the domain of width w, the quadtree must have more than two cells across the gap, or
+// a loop could merge with another or vanish when the buffer zone is cleared. We sample the
+// boundary, find for each sample the nearest boundary point on the domain's side of its
+// segment that is not just its neighbour along the same loop, and ask for cells of side
+// <= w/4 at the sample, at that nearest point and halfway between them. Parts facing each
+// other across the outside (a slit between two prongs) need only cells no wider than the
+// slit, which no cell then spans: the clearance removes the cells beside it, and the buffer
+// fills each side on its own. So a slit of width d counts as a gap of width 4d.
+// A size field: measured in doubles (the approximate kernel); what it decides on the input,
+// which segments are neighbours and which corners are convex, it decides on vertex indices
+// and with the traits' exact orientation.
 //
 // "Not its neighbour": a point r on the same loop counts only if the way from the sample to r
 // along the loop is more than `detour` times the straight distance; a smooth curve bending
@@ -106,6 +110,8 @@ public:
   static constexpr double corner_zone = 0.125;
   // corners sharper than this (degrees) are needles: their sides count for each other
   static constexpr double needle_angle = 10;
+  // a slit of the outside d wide counts as a gap of the domain this many times as wide
+  static constexpr double outside_gap_weight = 4;
 
 private:
   // gap() within the box of radius r around q
@@ -131,13 +137,17 @@ private:
       const double d = std::sqrt(CGAL::squared_distance(c, q));
       if(!(d > 0) || d > reach || d >= best)
         return;
+      const bool outside = CGAL::determinant(here.segment.to_vector(), c - q) <= 0;
+      const double width = outside ? outside_gap_weight * d : d;
+      if(width >= best)
+        return;
       if(s.loop == here.loop) {
         double along = std::abs(s.arc_a + t * s.length - arc);
         along = (std::min)(along, m_loop_lengths[s.loop] - along);
         if(along <= m_detour * d)
           return; // a neighbour along the loop, not the other side of a gap
       }
-      best = d;
+      best = width;
       nearest = c;
     });
     return best;
