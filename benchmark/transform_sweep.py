@@ -3,6 +3,7 @@
 
 Usage:
     transform_sweep.py QUAD_MESHER DATA_DIR OUT_DIR {airfoils,arms,blobs,stars} [--jobs N] [--blobs N]
+                       [--airfoils NAME,...] [--turns FIRST:LAST:STEP] [--scales S,...]
 
 Meshes each input with `QUAD_MESHER IN.poly -o OUT.msh --report OUT.json` and counts the quads
 the report gives as having an angle outside [45, 135] that no input corner forces
@@ -10,7 +11,10 @@ the report gives as having an angle outside [45, 135] that no input corner force
 only, so the guarantee is judged over many positions:
   * airfoils: DATA_DIR's airfoil_30p30n, naca0012 and naca0012_sharp, each turned about its
     points' centroid by 11, 37, 59, 83, 101, 123, 149 and 172 degrees and scaled by 1, 1.37,
-    3.1 and 7.3 (96 runs: air foils at angles of attack);
+    3.1 and 7.3 (96 runs: air foils at angles of attack). --airfoils takes other shared
+    cases (by file name, e.g. airfoil_3elem_jigsaw), --turns other angles (degrees FIRST,
+    FIRST+STEP, ... up to LAST) and --scales other scales: `--airfoils
+    airfoil_30p30n,airfoil_3elem_jigsaw --turns 1:179:2 --scales 1.37,3.1,7.3` is 540 runs;
   * arms: an L, a cross and a rectangle with arms 0.03 to 0.21 wide turned 0.37 to 45.37
     degrees, and an L and a cross 0.126 to 0.15 wide turned 20.37 to 45.87 degrees (504 runs:
     narrow regions across the quadtree's axes);
@@ -90,16 +94,29 @@ def write_loops(path, loops, holes, scale, turn, ox, oy):
     return path
 
 
-def airfoil_inputs(data_dir, out_dir):
-    cases = [('airfoil_30p30n', 'airfoil_30p30n'), ('naca0012', 'naca0012'), ('naca0012', 'naca0012_sharp')]
+AIRFOILS = ['airfoil_30p30n', 'naca0012', 'naca0012_sharp']
+TURNS = [11, 37, 59, 83, 101, 123, 149, 172]
+SCALES = [1.0, 1.37, 3.1, 7.3]
+
+
+def shared_poly(data_dir, name):
+    """DATA_DIR/FOLDER/NAME.poly, FOLDER the one that holds it (naca0012_sharp is in naca0012)."""
+    for folder in sorted(os.listdir(data_dir)):
+        path = os.path.join(data_dir, folder, name + '.poly')
+        if os.path.isfile(path):
+            return path
+    sys.exit('transform_sweep.py: no %s.poly in a folder of %s' % (name, data_dir))
+
+
+def airfoil_inputs(data_dir, out_dir, names=AIRFOILS, turns=TURNS, scales=SCALES):
     inputs = []
-    for folder, name in cases:
-        poly = read_poly(os.path.join(data_dir, folder, name + '.poly'))
+    for name in names:
+        poly = read_poly(shared_poly(data_dir, name))
         xs = [v[1] for v in poly[1]]
         ys = [v[2] for v in poly[1]]
         cx, cy = sum(xs) / len(xs), sum(ys) / len(ys)
-        for degrees in (11, 37, 59, 83, 101, 123, 149, 172):
-            for scale in (1.0, 1.37, 3.1, 7.3):
+        for degrees in turns:
+            for scale in scales:
                 c, s = scale * math.cos(math.radians(degrees)), scale * math.sin(math.radians(degrees))
                 path = os.path.join(out_dir, '%s_turned%d_x%g.poly' % (name, degrees, scale))
                 write_transformed(path, poly, lambda x, y: (cx + c * (x - cx) - s * (y - cy),
@@ -220,9 +237,18 @@ def main():
     parser.add_argument('set', choices=['airfoils', 'arms', 'blobs', 'stars'])
     parser.add_argument('--jobs', type=int, default=1)
     parser.add_argument('--blobs', type=int, default=80, help='how many blobs (seeds 0 to N-1)')
+    parser.add_argument('--airfoils', default=','.join(AIRFOILS), help='airfoils: the shared cases, by file name')
+    parser.add_argument('--turns', help='airfoils: degrees FIRST:LAST:STEP (default %s)' % TURNS)
+    parser.add_argument('--scales', default=','.join('%g' % s for s in SCALES), help='airfoils: the scales')
     args = parser.parse_args()
     os.makedirs(args.out_dir, exist_ok=True)
-    inputs = {'airfoils': lambda: airfoil_inputs(args.data_dir, args.out_dir), 'arms': lambda: arm_inputs(args.out_dir),
+    turns = TURNS
+    if args.turns:
+        first, last, step = (int(t) for t in args.turns.split(':'))
+        turns = list(range(first, last + 1, step))
+    inputs = {'airfoils': lambda: airfoil_inputs(args.data_dir, args.out_dir, args.airfoils.split(','), turns,
+                                                 [float(x) for x in args.scales.split(',')]),
+              'arms': lambda: arm_inputs(args.out_dir),
               'blobs': lambda: blob_inputs(args.out_dir, args.blobs), 'stars': lambda: star_inputs(args.out_dir)}[args.set]()
     with_out = failed = quads = misses = 0
     with ThreadPoolExecutor(args.jobs) as pool:
