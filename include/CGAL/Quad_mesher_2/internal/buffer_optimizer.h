@@ -11,6 +11,7 @@
 #define CGAL_QUAD_MESHER_2_INTERNAL_BUFFER_OPTIMIZER_H
 
 #include <CGAL/Quad_mesher_2/internal/buffer_zone.h>
+#include <CGAL/Quad_mesher_2/internal/quad_geometry.h>
 #include <CGAL/Quad_mesher_2/internal/wedge_winding.h>
 
 #include <algorithm>
@@ -18,7 +19,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <limits>
 #include <utility>
 #include <vector>
 
@@ -550,8 +550,7 @@ private:
     const Point_2d& E1 = loop[(it->second.edge + 1) % loop.size()];
     const Vector_2d e = E1 - E0;
     const double el = length_2d(e);
-    const double magnitude = (std::max)({ std::abs(E0.x()), std::abs(E0.y()), std::abs(E1.x()), std::abs(E1.y()) });
-    const double off_line = el * (1e-9 * el + 2 * std::numeric_limits<double>::epsilon() * magnitude);
+    const double off_line = el * (1e-9 * el + 2 * coordinate_rounding_2d(E0, E1));
     if(std::abs(CGAL::determinant(e, A - E0)) > off_line || std::abs(CGAL::determinant(e, B - E0)) > off_line)
       return false;
     p = along_2d(A, B, t);

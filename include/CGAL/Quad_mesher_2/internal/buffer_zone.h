@@ -405,8 +405,7 @@ public:
     const auto compare = traits.compare_squared_distance_2_object();
     const auto segment = traits.construct_segment_2_object();
     // the boxes within `clear` of the segment's, widened past the rounding of its corners
-    const double r = clear * (1 + 1e-6)
-                     + 4 * std::numeric_limits<double>::epsilon() * (std::max)({ std::abs(a.x()), std::abs(a.y()), std::abs(b.x()), std::abs(b.y()) });
+    const double r = clear * (1 + 1e-6) + 4 * coordinate_rounding_2d(a, b);
     const Bbox_2 box((std::min)(a.x(), b.x()) - r, (std::min)(a.y(), b.y()) - r, (std::max)(a.x(), b.x()) + r, (std::max)(a.y(), b.y()) + r);
     bool clear_of = true;
     locator->edges_meeting(box, [&](std::size_t l, std::size_t k) {

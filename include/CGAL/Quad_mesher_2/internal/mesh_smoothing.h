@@ -19,7 +19,6 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <limits>
 #include <utility>
 #include <vector>
 
@@ -177,9 +176,7 @@ private:
     const Point_2d& b = m_xy[m_boundary_next[v]];
     const Vector_2d ab = b - a, av = m_xy[v] - a;
     const double cross = CGAL::determinant(ab, av), dot = CGAL::scalar_product(ab, av);
-    const double magnitude = (std::max)({ std::abs(a.x()), std::abs(a.y()), std::abs(b.x()), std::abs(b.y()) });
-    const double off_line = (std::max)(1e-12 * std::sqrt(ab.squared_length()),
-                                       16 * std::numeric_limits<double>::epsilon() * magnitude);
+    const double off_line = (std::max)(1e-12 * std::sqrt(ab.squared_length()), 16 * coordinate_rounding_2d(a, b));
     return cross * cross <= off_line * off_line * ab.squared_length() && dot > 0 && dot < ab.squared_length();
   }
 
@@ -195,6 +192,7 @@ private:
     std::vector<std::array<double, 2>> edges2; // at v in each quad: to the next and previous corner
     double energy = 0;
     bool wanted = false; // a quad with an angle outside [60, 120] or an aspect ratio over 3
+    double worst_aspect2 = 0;
   };
 
   // fills `s` (its buffers kept: no allocation once they have grown)
@@ -204,12 +202,14 @@ private:
     s.edges2.clear();
     s.energy = 0;
     s.wanted = false;
+    s.worst_aspect2 = 0;
     for(std::size_t q : m_quads_at[v]) {
       const Quad& Q = m_quads[q];
       s.shapes.emplace_back(corners(Q));
       const Smoothing_quad_shape& shape = s.shapes.back();
       s.energy += shape.energy();
       s.wanted = s.wanted || shape.needs_smoothing();
+      s.worst_aspect2 = (std::max)(s.worst_aspect2, shape.aspect2);
       const int c = corner_of(Q, v);
       s.edges2.push_back(
           { (m_xy[Q[(c + 1) % 4]] - m_xy[v]).squared_length(), (m_xy[Q[(c + 3) % 4]] - m_xy[v]).squared_length() });
@@ -219,15 +219,14 @@ private:
   // whether the star after a move (`after`) keeps the bound that `before` had
   bool keeps_the_bound(const Star& before, const Star& after) const
   {
-    double worst_aspect2 = Smoothing_quad_shape::max_aspect2;
-    for(const Smoothing_quad_shape& b : before.shapes) worst_aspect2 = (std::max)(worst_aspect2, b.aspect2);
+    const double aspect2_bound = (std::max)(before.worst_aspect2, Smoothing_quad_shape::max_aspect2);
     for(std::size_t k = 0; k < before.shapes.size(); ++k) {
       const Smoothing_quad_shape& b = before.shapes[k];
       const Smoothing_quad_shape& a = after.shapes[k];
       if(!a.convex) return false;
       for(int c = 0; c < 4; ++c)
         if(a.cos2[c] > (std::max)(b.cos2[c], Smoothing_quad_shape::bound_cos2)) return false;
-      if(a.aspect2 > worst_aspect2) return false;
+      if(a.aspect2 > aspect2_bound) return false;
       for(int side = 0; side < 2; ++side)
         if(after.edges2[k][side] < (std::min)(before.edges2[k][side], m_min_edge2)) return false;
     }

@@ -135,7 +135,7 @@ private:
       double t;
       const P c = closest(s.segment, q, t);
       const double d = std::sqrt(CGAL::squared_distance(c, q));
-      if(!(d > 0) || d > reach || d >= best)
+      if(!(d > 0) || d > reach)
         return;
       const bool outside = CGAL::determinant(here.segment.to_vector(), c - q) <= 0;
       const double width = outside ? outside_gap_weight * d : d;

@@ -34,6 +34,15 @@ inline Point_2d mean_2d(Iterator first, Iterator last)
   return ORIGIN + sum / n;
 }
 
+/// The rounding of a coordinate of `a` or `b`: machine epsilon times the largest of their
+/// coordinates' magnitudes. Far from the origin (map projections) it outgrows any tolerance
+/// relative to an edge's length.
+inline double coordinate_rounding_2d(const Point_2d& a, const Point_2d& b)
+{
+  return std::numeric_limits<double>::epsilon()
+         * (std::max)({ std::abs(a.x()), std::abs(a.y()), std::abs(b.x()), std::abs(b.y()) });
+}
+
 /// the vector `v` turned counter-clockwise by `radians`
 inline Vector_2d turned_2d(const Vector_2d& v, double radians)
 {
