@@ -326,6 +326,22 @@ void add_buffer(const Options& opt, const Mesher& mesher, nlohmann::ordered_json
               << " buffer quads have an angle outside [45, 135] that no input corner forces: " << why << "\n";
 }
 
+// the mesh's regions: tag, attribute (null where none) and quads of each
+template <class Point_2>
+void add_regions(const QM::Quad_mesh_2<Point_2>& mesh, nlohmann::ordered_json& report)
+{
+  if(mesh.regions.empty())
+    return;
+  std::vector<std::size_t> quads(mesh.regions.size(), 0);
+  for(std::size_t r : mesh.quad_regions) ++quads[r];
+  nlohmann::json regions = nlohmann::json::array();
+  for(std::size_t r = 0; r < mesh.regions.size(); ++r)
+    regions.push_back({ { "tag", mesh.regions[r].tag },
+                        { "attribute", mesh.regions[r].has_attribute ? nlohmann::json(mesh.regions[r].attribute) : nlohmann::json() },
+                        { "quads", quads[r] } });
+  report["regions"] = regions;
+}
+
 // the whole report but its seconds
 template <class K, class Mesher>
 void fill_report(const Options& opt, const QM::Domain_2<K>& domain, QM::Stage last, const Mesher& mesher,
@@ -336,7 +352,8 @@ void fill_report(const Options& opt, const QM::Domain_2<K>& domain, QM::Stage la
   report["input"] = { { "file", opt.input },
                       { "points", domain.points.size() },
                       { "segments", domain.segments.size() },
-                      { "holes", domain.holes.size() } };
+                      { "holes", domain.holes.size() },
+                      { "regional_attributes", domain.region_attributes.size() } };
   report["input"]["merged_duplicate_points"] = mesher.number_of_merged_points();
   report["kernel"] = opt.kernel;
   report["curves"] = opt.curves;
@@ -353,6 +370,7 @@ void fill_report(const Options& opt, const QM::Domain_2<K>& domain, QM::Stage la
     add_buffer(opt, mesher, report);
   if(last >= QM::Stage::SMOOTHING)
     report["smoothing"] = { { "moves", mesher.smoothing_moves() }, { "vertex_splits", mesher.vertex_splits() } };
+  add_regions(mesh, report);
   report["points_as_vertices"] = mesher.point_vertices().size();
   report["max_aspect_ratio_at_points"] = QM::max_aspect_ratio_around(mesh, mesher.point_vertices());
   report["quadtree_depth"] = tree.depth();

@@ -23,6 +23,7 @@
 #include <initializer_list>
 #include <random>
 #include <set>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -79,6 +80,15 @@ inline std::string error_of(const Domain& d)
     for(const char* qm2_part : {__VA_ARGS__})                                                      \
       EXPECT_NE(qm2_msg.find(qm2_part), std::string::npos) << "message: " << qm2_msg << "\nlacks: " << qm2_part; \
   } while(false)
+
+/// Expects `extract_loops(d)` to throw a message holding every part of `parts`.
+inline void expect_error(const Domain& d, const std::vector<std::string>& parts)
+{
+  const std::string msg = error_of(d);
+  EXPECT_FALSE(msg.empty()) << "no Meshing_error";
+  for(const std::string& part : parts)
+    EXPECT_NE(msg.find(part), std::string::npos) << "message: " << msg << "\nlacks: " << part;
+}
 
 /// Independent check: the domain is on the left of each loop, i.e. its polygon is
 /// counterclockwise iff the loop is outer; the first vertex is kept; depths are consistent.
@@ -315,6 +325,53 @@ TEST(Domain_loops_2, IslandInHole)
     EXPECT_EQ(loops.isolated_points, (std::vector<std::size_t>{12, 13}));
     EXPECT_EQ(CGAL::Quad_mesher_2::domain_area(d, loops), 100 - 36 + 4);
   }
+}
+
+TEST(Domain_loops_2, RegionsAndTheirAttributes)
+{
+  Domain d;
+  add_square(d, 2, 2, 8, 8);   // hole
+  add_square(d, 4, 4, 6, 6);   // island
+  add_square(d, 0, 0, 10, 10); // outer
+  add_square(d, 20, 0, 30, 10); // a second outer loop, apart
+  d.holes.push_back(Point_2(3, 3));
+  // the island's attribute given twice alike, the ring's once; the far square has none
+  d.region_attributes = { { Point_2(5, 5), 2.5, 0.1 }, { Point_2(1, 1), 7, 0 }, { Point_2(5.5, 4.5), 2.5, 0.1 } };
+  Loops loops = extract_loops(d);
+  ASSERT_EQ(loops.loops.size(), 4u);
+  // by depth: the two outer squares (regions 0 and 1), the hole (region 0's), the island
+  EXPECT_EQ(loops.loops[0].region, 0u);
+  EXPECT_EQ(loops.loops[1].region, 1u);
+  EXPECT_EQ(loops.loops[2].region, 0u);
+  EXPECT_FALSE(loops.loops[2].is_outer);
+  EXPECT_EQ(loops.loops[3].region, 2u);
+  EXPECT_EQ(loops.region_attributes, (std::vector<std::size_t>{ 1, std::size_t(-1), 0 }));
+
+  // errors name the attribute: outside the domain (in the hole), on a segment, two different
+  // ones in a region, and not finite
+  const std::pair<Point_2, std::string> misplaced[] = { { Point_2(3, 3), "lies outside the domain (inside the loop" },
+                                                        { Point_2(10, 5), "lies on segment" },
+                                                        { Point_2(15, 5), "outside every boundary loop" } };
+  for(const auto& [p, what] : misplaced) {
+    Domain bad = d;
+    bad.region_attributes.push_back({ p, 1, 0 });
+    bad.region_attribute_labels = { "1 (line 20)", "2 (line 21)", "3 (line 22)", "4 (line 23)" };
+    expect_error(bad, { "regional attribute 4 (line 23) (" + std::to_string(int(CGAL::to_double(p.x()))), what });
+  }
+  Domain two = d;
+  two.region_attributes[2].attribute = 3;
+  expect_error(two, { "regional attribute 2 ", "and regional attribute 0 (5, 5)", "lie in the same region", "differ" });
+  Domain area = d;
+  area.region_attributes[2].max_area = 0.2;
+  expect_error(area, { "lie in the same region" });
+  Domain nan = d;
+  nan.region_attributes[1].attribute = std::numeric_limits<double>::quiet_NaN();
+  expect_error(nan, { "regional attribute 1 (1, 1) has attribute nan", "must be finite" });
+  // a point cloud has no regions
+  Domain cloud;
+  cloud.points = { Point_2(0, 0), Point_2(1, 1) };
+  cloud.region_attributes = { { Point_2(0.5, 0.5), 1, 0 } };
+  expect_error(cloud, { "regional attribute 0 (0.5, 0.5) lies outside every boundary loop", "no regions" });
 }
 
 TEST(Domain_loops_2, HoleInIslandInHole)

@@ -265,6 +265,14 @@ TEST(IO_read, PolyTolerates)
   ASSERT_TRUE(QIO::read_poly(r, d, &err)) << err;
   EXPECT_EQ(d.points.size(), 3u);
   EXPECT_TRUE(d.segment_markers.empty()); // the header announces none
+  // kept: points, attributes and maximum areas (a negative one is none, as in Triangle)
+  ASSERT_EQ(d.region_attributes.size(), 2u);
+  EXPECT_EQ(d.region_attributes[0].point, Point_2(0.2, 0.2));
+  EXPECT_EQ(d.region_attributes[0].attribute, 7);
+  EXPECT_EQ(d.region_attributes[0].max_area, 0);
+  EXPECT_EQ(d.region_attributes[1].attribute, -1);
+  EXPECT_EQ(d.region_attributes[1].max_area, 0);
+  EXPECT_EQ(d.region_attribute_labels, (std::vector<std::string>{ "0 (line 11)", "1 (line 12)" }));
 }
 
 TEST(IO_read, PolyWithZeroVerticesReadsTheNodeBesideIt)
@@ -382,7 +390,9 @@ TEST(IO_read, PolyMalformedCases)
     {"region_without_attribute", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n0\n1\n1 0.2 0.2\n", 8,
      "region 1 needs two coordinates and an attribute"},
     {"region_bad_area", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n0\n1\n1 0.2 0.2 7 big\n", 8,
-     "expected a number for the maximum area of region 1"},
+     "expected a finite number for the maximum area of region 1"},
+    {"region_infinite_attribute", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n0\n1\n1 0.2 0.2 inf\n", 8,
+     "expected a finite number for the attribute of region 1, found \"inf\""},
     {"region_trailing_garbage", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n0\n1\n1 0.2 0.2 7 0.1 9\n", 8, "unexpected text"},
     {"region_skipped_index", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n0\n2\n0 0.2 0.2 7\n2 0.3 0.2 7\n", 9, "out of sequence"},
   };

@@ -55,6 +55,16 @@ inline Mesh make_marked_test_mesh()
   return m;
 }
 
+/// The marked test mesh in two regions: quad 0 of attribute 2.5 (tag 1), quad 1 of
+/// attribute 7 (tag 7).
+inline Mesh make_regions_test_mesh()
+{
+  Mesh m = make_marked_test_mesh();
+  m.regions = { { 7, true, 7.0 }, { 1, true, 2.5 } };
+  m.quad_regions = { 1, 0 };
+  return m;
+}
+
 inline double xd(const Point& p) { return CGAL::to_double(p.x()); }
 inline double yd(const Point& p) { return CGAL::to_double(p.y()); }
 
@@ -114,10 +124,12 @@ struct Read_back
   std::vector<std::array<double, 3>> points;
   std::vector<std::array<std::size_t, 4>> quads; // 0-based
   std::vector<std::array<long long, 3>> edges;    // boundary edges: 0-based ends, marker
+  std::vector<int> quad_regions;                  // each quad's region tag, where the file has them
 };
 
 /// A strict reader for the MSH 4.1 ASCII subset our writer produces. Its boundary edges
-/// get the marker their curve's physical name gives (`marker_3`, `marker_m3` for -3).
+/// get the marker their curve's physical name gives (`marker_3`, `marker_m3` for -3); its
+/// quads the region tag of their surface's physical group `region_3` (none for `domain`).
 inline bool parse_msh41(const std::string& text, Read_back& out)
 {
   std::istringstream in(text);
@@ -131,6 +143,8 @@ inline bool parse_msh41(const std::string& text, Read_back& out)
   if(!expect("$EndMeshFormat") || !(in >> tok))
     return false;
   std::map<int, int> marker_of_physical; // of the curves' physical tags
+  std::set<int> region_physicals;        // the surfaces' physical tags named region_<tag>
+  bool domain_physical = false;
   if(tok == "$PhysicalNames") {
     std::size_t n = 0;
     if(!(in >> n))
@@ -140,8 +154,14 @@ inline bool parse_msh41(const std::string& text, Read_back& out)
       std::string name;
       if(!(in >> dim >> tag >> name))
         return false;
-      if(dim == 2 && (tag != 1 || name != "\"domain\""))
-        return false;
+      if(dim == 2) {
+        if(tag == 1 && name == "\"domain\"" && !domain_physical && region_physicals.empty())
+          domain_physical = true;
+        else if(name == "\"region_" + std::to_string(tag) + "\"" && !domain_physical && region_physicals.insert(tag).second)
+          continue;
+        else
+          return false;
+      }
       if(dim == 1) {
         if(name.rfind("\"marker_", 0) != 0 || marker_of_physical.count(tag) != 0)
           return false;
@@ -153,8 +173,8 @@ inline bool parse_msh41(const std::string& text, Read_back& out)
       return false;
   }
   std::size_t np = 0, nc = 0, ns = 0, nv = 0;
-  if(tok != "$Entities" || !(in >> np >> nc >> ns >> nv) || np != 0 || nc != marker_of_physical.size() || ns != 1 ||
-     nv != 0)
+  if(tok != "$Entities" || !(in >> np >> nc >> ns >> nv) || np != 0 || nc != marker_of_physical.size() || ns < 1 ||
+     nv != 0 || (ns > 1) != !region_physicals.empty())
     return false;
   double bb[6];
   std::map<int, int> marker_of_curve;
@@ -166,34 +186,46 @@ inline bool parse_msh41(const std::string& text, Read_back& out)
       return false;
     marker_of_curve[curve] = marker_of_physical[physical];
   }
-  int surface_tag = 0;
-  std::size_t nphys = 0, nbound = 0;
-  if(!(in >> surface_tag >> bb[0] >> bb[1] >> bb[2] >> bb[3] >> bb[4] >> bb[5] >> nphys))
-    return false;
-  for(std::size_t i = 0; i < nphys; ++i)
-    if(!(in >> tok) || tok != "1")
+  std::map<int, int> region_of_surface; // -1: the one surface "domain", or none
+  std::set<int> bounding_curves;
+  for(std::size_t k = 0; k < ns; ++k) {
+    int surface_tag = 0, physical = -1;
+    std::size_t nphys = 0, nbound = 0;
+    if(!(in >> surface_tag >> bb[0] >> bb[1] >> bb[2] >> bb[3] >> bb[4] >> bb[5] >> nphys) || nphys > 1)
       return false;
-  if(!(in >> nbound) || nbound != nc)
-    return false;
-  for(std::size_t i = 0; i < nbound; ++i)
-    if(!(in >> tok) || marker_of_curve.count(std::stoi(tok)) == 0)
+    if(nphys == 1 && !(in >> physical))
       return false;
-  if(nphys != (nc == 0 ? 0 : 1) || !expect("$EndEntities"))
+    const bool named = region_physicals.count(physical) != 0;
+    if(nphys == 1 && !named && !(physical == 1 && domain_physical))
+      return false;
+    if(!(in >> nbound))
+      return false;
+    for(std::size_t i = 0; i < nbound; ++i)
+      if(!(in >> tok) || marker_of_curve.count(std::stoi(tok)) == 0)
+        return false;
+      else
+        bounding_curves.insert(std::stoi(tok));
+    region_of_surface[surface_tag] = named ? physical : -1;
+  }
+  if(bounding_curves.size() != nc || !expect("$EndEntities"))
     return false;
 
   std::size_t nblocks = 0, nnodes = 0, mintag = 0, maxtag = 0;
   if(!expect("$Nodes") || !(in >> nblocks >> nnodes >> mintag >> maxtag))
     return false;
   out.points.assign(nnodes, {0, 0, 0});
+  std::vector<bool> seen(nnodes, false);
   for(std::size_t b = 0; b < nblocks; ++b) {
     int dim = 0, tag = 0, param = 0;
     std::size_t n = 0;
-    if(!(in >> dim >> tag >> param >> n) || dim != 2 || tag != surface_tag || param != 0)
+    if(!(in >> dim >> tag >> param >> n) || dim != 2 || region_of_surface.count(tag) == 0 || param != 0)
       return false;
     std::vector<std::size_t> tags(n);
     for(auto& t : tags)
-      if(!(in >> t) || t < 1 || t > nnodes)
+      if(!(in >> t) || t < 1 || t > nnodes || seen[t - 1])
         return false;
+      else
+        seen[t - 1] = true;
     for(std::size_t t : tags) {
       std::string sx, sy, sz; // via strings: std::stod round-trips max_digits10 output exactly
       if(!(in >> sx >> sy >> sz))
@@ -201,38 +233,52 @@ inline bool parse_msh41(const std::string& text, Read_back& out)
       out.points[t - 1] = {std::stod(sx), std::stod(sy), std::stod(sz)};
     }
   }
-  if(!expect("$EndNodes"))
+  if(std::find(seen.begin(), seen.end(), false) != seen.end() || !expect("$EndNodes"))
     return false;
 
-  std::size_t nelem = 0, next_tag = 1;
+  // quads by element tag (1..m, in any block order), then the lines from m + 1 on
+  std::size_t nelem = 0;
   if(!expect("$Elements") || !(in >> nblocks >> nelem >> mintag >> maxtag))
     return false;
+  std::map<std::size_t, std::pair<std::array<std::size_t, 4>, int>> quads;
+  std::size_t next_line_tag = 0;
   for(std::size_t b = 0; b < nblocks; ++b) {
     int dim = 0, tag = 0, type = 0;
     std::size_t n = 0;
     if(!(in >> dim >> tag >> type >> n))
       return false;
-    const bool quads = dim == 2 && tag == surface_tag && type == 3;
-    const bool lines = dim == 1 && marker_of_curve.count(tag) != 0 && type == 1 && !out.quads.empty();
-    if(!quads && !lines)
+    const bool is_quads = dim == 2 && region_of_surface.count(tag) != 0 && type == 3 && next_line_tag == 0;
+    const bool lines = dim == 1 && marker_of_curve.count(tag) != 0 && type == 1 && !quads.empty();
+    if(!is_quads && !lines)
       return false;
+    if(lines && next_line_tag == 0)
+      next_line_tag = quads.size() + 1;
     for(std::size_t e = 0; e < n; ++e) {
       std::size_t etag = 0;
       std::array<std::size_t, 4> q{};
-      if(!(in >> etag) || etag != next_tag++)
+      if(!(in >> etag) || (lines && etag != next_line_tag++) || (is_quads && quads.count(etag) != 0))
         return false;
-      for(int k = 0; k < (quads ? 4 : 2); ++k) {
+      for(int k = 0; k < (is_quads ? 4 : 2); ++k) {
         if(!(in >> q[k]) || q[k] < 1 || q[k] > nnodes)
           return false;
         --q[k];
       }
-      if(quads)
-        out.quads.push_back(q);
+      if(is_quads)
+        quads[etag] = { q, region_of_surface[tag] };
       else
         out.edges.push_back({(long long)q[0], (long long)q[1], marker_of_curve[tag]});
     }
   }
-  return out.quads.size() + out.edges.size() == nelem && expect("$EndElements");
+  std::size_t expected_tag = 1;
+  for(const auto& [etag, quad] : quads) {
+    if(etag != expected_tag++)
+      return false;
+    out.quads.push_back(quad.first);
+    if(quad.second >= 0)
+      out.quad_regions.push_back(quad.second);
+  }
+  return (out.quad_regions.empty() || out.quad_regions.size() == out.quads.size())
+         && out.quads.size() + out.edges.size() == nelem && expect("$EndElements");
 }
 
 /// The whitespace-separated tokens between the `>` of the opening tag that contains
@@ -464,6 +510,17 @@ inline void expect_same(const Mesh& m, const Read_back& r)
   EXPECT_EQ(read, edges);
 }
 
+/// `m` written as MSH 4.1, and what parse_msh41() reads back from it, checked to be `m`
+inline std::pair<std::string, Read_back> msh_read_back(const Mesh& m)
+{
+  std::ostringstream os;
+  EXPECT_TRUE(CGAL::Quad_mesher_2::IO::write_MSH(os, m));
+  Read_back r;
+  EXPECT_TRUE(parse_msh41(os.str(), r)) << os.str();
+  expect_same(m, r);
+  return { os.str(), r };
+}
+
 } // namespace qm2_test_io_write
 
 TEST(IOWrite, MSHRoundTrip)
@@ -486,12 +543,7 @@ TEST(IOWrite, MSHBoundaryEdgesByMarker)
 {
   using namespace qm2_test_io_write;
   const Mesh m = make_marked_test_mesh();
-  std::ostringstream os;
-  ASSERT_TRUE(CGAL::Quad_mesher_2::IO::write_MSH(os, m));
-  const std::string text = os.str();
-  Read_back r;
-  ASSERT_TRUE(parse_msh41(text, r)) << text;
-  expect_same(m, r);
+  const std::string text = msh_read_back(m).first;
   // a marker is not positive: physical tags 1..4 by increasing marker, names keep the markers
   EXPECT_NE(text.find("$PhysicalNames\n5\n1 1 \"marker_m2\"\n1 2 \"marker_3\"\n1 3 \"marker_5\"\n"
                       "1 4 \"marker_7\"\n2 1 \"domain\"\n$EndPhysicalNames\n"),
@@ -509,6 +561,54 @@ TEST(IOWrite, MSHBoundaryEdgesByMarker)
   Read_back rp;
   ASSERT_TRUE(parse_msh41(pos.str(), rp));
   expect_same(positive, rp);
+}
+
+TEST(IOWrite, MSHASurfaceAndAPhysicalGroupPerRegion)
+{
+  using namespace qm2_test_io_write;
+  const Mesh m = make_regions_test_mesh();
+  const auto [text, r] = msh_read_back(m);
+  EXPECT_EQ(r.quad_regions, (std::vector<int>{ 1, 7 }));
+  EXPECT_NE(text.find("2 7 \"region_7\"\n2 1 \"region_1\"\n$EndPhysicalNames\n"), std::string::npos) << text;
+  // quad 1 in surface 1 (region 7) first, quad 0 in surface 2; each keeps its tag
+  EXPECT_NE(text.find("$Elements\n6 8 1 8\n2 1 3 1\n2 2 5 6 3\n2 2 3 1\n1 1 2 3 4\n"), std::string::npos) << text;
+
+  // one region without an attribute: the one surface "domain", as without regions
+  Mesh one = make_marked_test_mesh();
+  std::ostringstream plain;
+  ASSERT_TRUE(CGAL::Quad_mesher_2::IO::write_MSH(plain, one));
+  one.regions = { { 1, false, 0.0 } };
+  one.quad_regions = { 0, 0 };
+  std::ostringstream single;
+  ASSERT_TRUE(CGAL::Quad_mesher_2::IO::write_MSH(single, one));
+  EXPECT_EQ(single.str(), plain.str());
+  // a region index out of range is refused
+  one.quad_regions = { 0, 1 };
+  std::ostringstream bad;
+  EXPECT_FALSE(CGAL::Quad_mesher_2::IO::write_MSH(bad, one));
+}
+
+TEST(IOWrite, VTUAndINPCarryTheRegions)
+{
+  using namespace qm2_test_io_write;
+  const Mesh m = make_regions_test_mesh();
+  std::ostringstream vtu;
+  ASSERT_TRUE(CGAL::Quad_mesher_2::IO::write_VTU(vtu, m));
+  // the quads, then the six lines
+  EXPECT_EQ(vtu_data_array(vtu.str(), "Name=\"region\""),
+            (std::vector<std::string>{ "1", "7", "0", "0", "0", "0", "0", "0" }));
+  EXPECT_EQ(vtu_data_array(vtu.str(), "Name=\"attribute\""),
+            (std::vector<std::string>{ "2.5", "7", "0", "0", "0", "0", "0", "0" }));
+  std::ostringstream inp;
+  ASSERT_TRUE(CGAL::Quad_mesher_2::IO::write_INP(inp, m));
+  EXPECT_NE(inp.str().find("*ELSET, ELSET=region_7\n2\n*ELSET, ELSET=region_1\n1\n"), std::string::npos) << inp.str();
+  // without regions, neither the fields nor the sets
+  const Mesh plain = make_marked_test_mesh();
+  std::ostringstream pv, pi;
+  ASSERT_TRUE(CGAL::Quad_mesher_2::IO::write_VTU(pv, plain));
+  ASSERT_TRUE(CGAL::Quad_mesher_2::IO::write_INP(pi, plain));
+  EXPECT_EQ(pv.str().find("Name=\"region\""), std::string::npos);
+  EXPECT_EQ(pi.str().find("ELSET=region_"), std::string::npos);
 }
 
 TEST(IOWrite, VTURoundTrip)

@@ -9,11 +9,13 @@
 
 #include <CGAL/Quad_mesher_2/Quadtree_mesher_2.h>
 
+#include <CGAL/Polygon_2_algorithms.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -392,6 +394,61 @@ TEST(Quadtree_mesher_2, boundary_edges_carry_the_segment_markers)
   // one marker per segment, or none
   d.segment_markers = { 1, 2 };
   EXPECT_THROW(QM::make_quad_mesh_2(d), QM::Meshing_error);
+}
+
+// Land around a lake (a hole) holding an island: two regions. The island's regional
+// attribute 2.5 is no integer, so its region takes tag 1; the land's 7 is its own tag.
+TEST(Quadtree_mesher_2, every_quad_carries_its_region)
+{
+  Domain d;
+  d.points = { K::Point_2(0, 0),     K::Point_2(4, 0),     K::Point_2(4, 3),     K::Point_2(0, 3),
+               K::Point_2(1, 0.7),   K::Point_2(3.2, 0.6), K::Point_2(3.1, 2.3), K::Point_2(0.9, 2.4),
+               K::Point_2(1.7, 1.2), K::Point_2(2.5, 1.3), K::Point_2(2.4, 1.8), K::Point_2(1.6, 1.7) };
+  for(std::size_t loop = 0; loop < 3; ++loop)
+    for(std::size_t k = 0; k < 4; ++k) d.segments.push_back({ 4 * loop + k, 4 * loop + (k + 1) % 4 });
+  d.holes = { K::Point_2(1.2, 1.0) };
+  const std::vector<K::Point_2> island(d.points.begin() + 8, d.points.end());
+  auto region_of = [&](const QM::Quad_mesh_2<K::Point_2>& mesh, std::size_t q) {
+    const auto& v = mesh.quads[q];
+    const K::Point_2 centre = CGAL::centroid(mesh.points[v[0]], mesh.points[v[1]], mesh.points[v[2]], mesh.points[v[3]]);
+    return CGAL::bounded_side_2(island.begin(), island.end(), centre, K()) == CGAL::ON_BOUNDED_SIDE ? 1 : 0;
+  };
+
+  // without attributes: regions 1 and 2 in the order of their outer loops, land first
+  QM::Quad_mesh_2<K::Point_2> mesh = QM::make_quad_mesh_2(d);
+  ASSERT_EQ(mesh.regions.size(), 2u);
+  EXPECT_EQ(mesh.regions[0].tag, 1);
+  EXPECT_EQ(mesh.regions[1].tag, 2);
+  EXPECT_FALSE(mesh.regions[0].has_attribute || mesh.regions[1].has_attribute);
+  ASSERT_EQ(mesh.quad_regions.size(), mesh.quads.size());
+  for(std::size_t q = 0; q < mesh.quads.size(); ++q)
+    ASSERT_EQ(mesh.quad_regions[q], std::size_t(region_of(mesh, q))) << "quad " << q;
+
+  // with attributes, the island's with a maximum area
+  const double max_area = 0.002;
+  d.region_attributes = { { K::Point_2(0.3, 0.3), 7, 0 }, { K::Point_2(2, 1.5), 2.5, max_area } };
+  mesh = QM::make_quad_mesh_2(d);
+  ASSERT_EQ(mesh.regions.size(), 2u);
+  EXPECT_EQ(mesh.regions[0].tag, 7);
+  EXPECT_EQ(mesh.regions[0].attribute, 7);
+  EXPECT_EQ(mesh.regions[1].tag, 1);
+  EXPECT_EQ(mesh.regions[1].attribute, 2.5);
+  EXPECT_TRUE(mesh.regions[0].has_attribute && mesh.regions[1].has_attribute);
+  std::array<double, 2> area{}, largest{};
+  std::array<std::size_t, 2> count{};
+  for(std::size_t q = 0; q < mesh.quads.size(); ++q) {
+    const std::size_t r = std::size_t(region_of(mesh, q));
+    ASSERT_EQ(mesh.quad_regions[q], r) << "quad " << q;
+    const auto& v = mesh.quads[q];
+    const double a = std::abs(CGAL::to_double(CGAL::area(mesh.points[v[0]], mesh.points[v[1]], mesh.points[v[2]])
+                                              + CGAL::area(mesh.points[v[0]], mesh.points[v[2]], mesh.points[v[3]])));
+    area[r] += a;
+    largest[r] = (std::max)(largest[r], a);
+    ++count[r];
+  }
+  EXPECT_LE(largest[1], max_area);
+  EXPECT_GT(count[1], std::size_t(0.48 / max_area)); // the island's area is 0.48
+  EXPECT_GT(area[0] / double(count[0]), 4 * area[1] / double(count[1])); // the land is not refined
 }
 
 TEST(Quadtree_mesher_2, stage_timings_are_recorded)

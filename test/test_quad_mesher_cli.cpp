@@ -118,6 +118,46 @@ TEST(quad_mesher_cli, solver_formats_carry_the_segment_markers)
   EXPECT_NE(r.err.find(".su2, .inp"), std::string::npos) << r.err;
 }
 
+// Land around a lake holding an island, with Triangle's regional attributes: each region's
+// quads come out as a group of every format that has them, and the report counts them.
+TEST(quad_mesher_cli, regional_attributes_come_out_as_region_groups)
+{
+  auto poly = scratch("island.poly"), msh = scratch("island.msh"), inp = scratch("island.inp"),
+       vtu = scratch("island.vtu"), json = scratch("island.json");
+  const std::string land_lake_island = "12 2 0 0\n1 0 0\n2 4 0\n3 4 3\n4 0 3\n5 1 0.7\n6 3.2 0.6\n7 3.1 2.3\n"
+                                       "8 0.9 2.4\n9 1.7 1.2\n10 2.5 1.3\n11 2.4 1.8\n12 1.6 1.7\n12 0\n1 1 2\n"
+                                       "2 2 3\n3 3 4\n4 4 1\n5 5 6\n6 6 7\n7 7 8\n8 8 5\n9 9 10\n10 10 11\n"
+                                       "11 11 12\n12 12 9\n1\n1 1.2 1.0\n";
+  std::ofstream(poly) << land_lake_island << "2\n1 0.3 0.3 7\n2 2.0 1.5 2.5 0.002\n";
+  Cli_run r = run(poly.string() + " --kernel " + kernel_name + " -o " + msh.string() + " -o " + inp.string() + " -o " +
+                  vtu.string() + " --report " + json.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto report = nlohmann::json::parse(slurp(json));
+  ASSERT_EQ(report["regions"].size(), 2u);
+  EXPECT_EQ(report["regions"][0]["tag"], 7);
+  EXPECT_EQ(report["regions"][0]["attribute"], 7.0);
+  EXPECT_EQ(report["regions"][1]["tag"], 1);
+  EXPECT_EQ(report["regions"][1]["attribute"], 2.5);
+  EXPECT_EQ(report["regions"][0]["quads"].get<std::size_t>() + report["regions"][1]["quads"].get<std::size_t>(),
+            report["quads"].get<std::size_t>());
+  EXPECT_EQ(report["input"]["regional_attributes"], 2);
+  const std::string m = slurp(msh);
+  EXPECT_NE(m.find("2 7 \"region_7\"\n2 1 \"region_1\"\n$EndPhysicalNames\n"), std::string::npos) << m.substr(0, 300);
+  EXPECT_NE(slurp(inp).find("\n*ELSET, ELSET=region_1\n"), std::string::npos);
+  EXPECT_NE(slurp(vtu).find("Name=\"attribute\""), std::string::npos);
+  // no attributes: two regions all the same, tags 1 and 2, attributes null
+  std::ofstream(poly) << land_lake_island;
+  r = run(poly.string() + " -o " + msh.string() + " --report " + json.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(slurp(msh).find("2 1 \"region_1\"\n2 2 \"region_2\"\n"), std::string::npos);
+  EXPECT_TRUE(nlohmann::json::parse(slurp(json))["regions"][1]["attribute"].is_null());
+  // an attribute in the lake is named with its file line
+  std::ofstream(poly) << land_lake_island << "1\n1 1.2 1.0 3\n";
+  r = run(poly.string() + " -o " + msh.string());
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("regional attribute 1 (line 30) (1.2, 1) lies outside the domain"), std::string::npos) << r.err;
+}
+
 TEST(quad_mesher_cli, both_kernels_give_the_same_mesh)
 {
   auto a = scratch("k_epick.json"), b = scratch("k_epeck.json"), m = scratch("k.off");

@@ -119,6 +119,7 @@ public:
     internal::Layer_extrusion_result<Point_2> result = extrusion.run(std::move(outer));
     smooth_stacks(result);
     result.mesh.boundary_edges = internal::marked_boundary_edges(result.mesh, m_domain, m_loops);
+    internal::assign_regions(result.mesh, m_domain, m_loops);
     make_report(result);
     record("boundary_layers", start);
     return std::move(result.mesh);

@@ -28,6 +28,11 @@ namespace Quad_mesher_2 {
 /// - <em>Isolated points</em> are the points on no segment; each must lie strictly inside the
 ///   domain, and the points stage (`Mesh_criteria_2::points_as_vertices()`, the default) makes
 ///   each one a mesh vertex.
+/// - `region_attributes`: optional, Triangle's regional attributes: a point strictly inside
+///   the domain gives the region it lies in (the face bounded by the loop around it and the
+///   loops just within) its attribute; every quad of that region carries it
+///   (`Quad_mesh_2::regions`). At most one attribute per region; a region without one is a
+///   region of its own all the same.
 /// - `segment_markers`: optional, one boundary marker per segment (a `.poly` file's segment
 ///   markers); the mesh's boundary edges carry them (`Quad_mesh_2::boundary_edges`). Empty if
 ///   the input has none: each loop's edges then carry the loop's number instead.
@@ -38,17 +43,29 @@ struct Domain_2
 {
   typedef typename GeomTraits::Point_2 Point_2;
   typedef std::array<std::size_t, 2> Segment;
+  /// a regional attribute: `attribute` for the region holding `point`; `max_area`, Triangle's
+  /// area bound (0: none), bounds the side of the quadtree cells in that region by its square
+  /// root
+  struct Region_attribute
+  {
+    Point_2 point;
+    double attribute = 0;
+    double max_area = 0;
+  };
 
   std::vector<Point_2> points;
   std::vector<Segment> segments;
   std::vector<Point_2> holes;
   std::vector<int> segment_markers; // empty, or one per segment
-  /// Optional, for error messages: how the user knows point `i`, segment `s`, hole `h`. The readers
+  std::vector<Region_attribute> region_attributes;
+  /// Optional, for error messages: how the user knows point `i`, segment `s`, hole `h`, regional
+  /// attribute `r`. The readers
   /// give the file's own numbering and line (`"5 (line 7)"` in a 1-based `.poly`); where
   /// these are empty, messages give the 0-based index.
   std::vector<std::string> point_labels;
   std::vector<std::string> segment_labels;
   std::vector<std::string> hole_labels;
+  std::vector<std::string> region_attribute_labels;
 
   bool is_point_cloud() const { return segments.empty(); }
   /// `point_labels[i]`, or `i` (0-based) if there is none
@@ -65,6 +82,11 @@ struct Domain_2
   std::string hole_label(std::size_t h) const
   {
     return h < hole_labels.size() ? hole_labels[h] : std::to_string(h);
+  }
+  /// `region_attribute_labels[r]`, or `r` (0-based) if there is none
+  std::string region_attribute_label(std::size_t r) const
+  {
+    return r < region_attribute_labels.size() ? region_attribute_labels[r] : std::to_string(r);
   }
 };
 

@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -45,6 +46,9 @@ struct Boundary_loop_2
   /// Nesting depth: 0 for a loop inside no other loop, 1 for a loop directly inside a depth-0
   /// loop, and so on.
   int depth = 0;
+  /// The region the loop bounds: the face of the domain inside its outer loop and outside the
+  /// holes within; regions are numbered from 0 in the order of their outer loops.
+  std::size_t region = 0;
 };
 
 /// \ingroup PkgQuadMesher2Ref
@@ -58,6 +62,9 @@ struct Domain_loops_2
   /// Indices into `Domain_2::points` of the points on no segment, increasing. All lie strictly
   /// inside the domain.
   std::vector<std::size_t> isolated_points;
+  /// Per region (see `Boundary_loop_2::region`), the index into `Domain_2::region_attributes`
+  /// of the regional attribute whose point lies in it, or `std::size_t(-1)` if none does.
+  std::vector<std::size_t> region_attributes;
 };
 
 namespace internal {
@@ -95,6 +102,9 @@ public:
       if(!m_d.holes.empty())
         throw Meshing_error("hole point " + m_d.hole_label(0) + " " + pt(m_d.holes[0]) +
                             " lies outside every boundary loop: the domain has no segments, so there is nothing to make a hole in");
+      if(!m_d.region_attributes.empty())
+        throw Meshing_error("regional attribute " + m_d.region_attribute_label(0) + " " + pt(m_d.region_attributes[0].point) +
+                            " lies outside every boundary loop: the domain has no segments, so it has no regions");
       for(std::size_t i = 0; i < np; ++i) out.isolated_points.push_back(i);
       return out;
     }
@@ -128,11 +138,14 @@ public:
     for(std::size_t l = 0; l < order.size(); ++l) order[l] = l;
     std::stable_sort(order.begin(), order.end(),
                      [&](std::size_t a, std::size_t b) { return m_depth[a] < m_depth[b]; });
+    number_regions(order);
+    out.region_attributes = locate_region_attributes();
     for(std::size_t l : order) {
       Boundary_loop_2<K> loop;
       loop.vertices = m_loops[l];
       loop.is_outer = m_is_outer[l];
       loop.depth = static_cast<int>(m_depth[l]);
+      loop.region = m_region[l];
       // Domain on the left: an outer loop must turn left (CCW), a hole right (CW).
       if(m_ccw[l] != loop.is_outer) std::reverse(loop.vertices.begin() + 1, loop.vertices.end());
       out.loops.push_back(std::move(loop));
@@ -469,6 +482,45 @@ private:
     }
   }
 
+  // ---- 9. regions and their attributes ----------------------------------------------------
+  // The outer loops in output order are regions 0, 1, ...; a hole loop bounds its parent's.
+  void number_regions(const std::vector<std::size_t>& order)
+  {
+    m_region.assign(m_loops.size(), none);
+    std::size_t regions = 0;
+    for(std::size_t l : order)
+      m_region[l] = m_is_outer[l] ? regions++ : m_region[m_parent[l]];
+    m_regions = regions;
+  }
+
+  // Per region, its regional attribute's index; each point strictly inside the domain, and
+  // no two different attributes in one region.
+  std::vector<std::size_t> locate_region_attributes()
+  {
+    std::vector<std::size_t> attribute_of(m_regions, none);
+    for(std::size_t r = 0; r < m_d.region_attributes.size(); ++r) {
+      const auto& a = m_d.region_attributes[r];
+      std::size_t on_seg = none;
+      const std::size_t loop = locate(a.point, none, on_seg);
+      const std::string name = "regional attribute " + m_d.region_attribute_label(r) + " " + pt(a.point);
+      if(!std::isfinite(a.attribute) || !(a.max_area >= 0) || !std::isfinite(a.max_area))
+        throw Meshing_error(name + " has attribute " + loops_format_double(a.attribute) + " and maximum area " +
+                            loops_format_double(a.max_area) + ": both must be finite, the area not negative");
+      if(on_seg != none)
+        throw Meshing_error(name + " lies on segment " + seg_str(on_seg) + ": it must be strictly inside the region it marks");
+      if(!m_in_domain[loop == none ? m_loops.size() : loop])
+        throw Meshing_error(name + " lies outside the domain (" + where_region(loop) + ")");
+      std::size_t& first = attribute_of[m_region[loop]];
+      if(first != none && (m_d.region_attributes[first].attribute != a.attribute
+                           || m_d.region_attributes[first].max_area != a.max_area))
+        throw Meshing_error(name + " and regional attribute " + m_d.region_attribute_label(first) + " " +
+                            pt(m_d.region_attributes[first].point) + " lie in the same region (inside " + loop_str(loop) +
+                            ") but differ: a region takes one attribute and one maximum area");
+      if(first == none) first = r;
+    }
+    return attribute_of;
+  }
+
   const Domain_2<K>& m_d;
   const K& m_traits;
   std::vector<std::size_t> m_degree;
@@ -485,6 +537,8 @@ private:
   std::vector<std::size_t> m_hole_in;  // per region (index nl: unbounded), its first hole point or none
   std::vector<bool> m_in_domain;
   std::vector<bool> m_is_outer;
+  std::vector<std::size_t> m_region;  // per loop, the region it bounds
+  std::size_t m_regions = 0;
 };
 
 /// Sums `v` pairwise, keeping the expression depth logarithmic (lazy exact numbers).
@@ -536,7 +590,8 @@ FT loops_balanced_sum(std::vector<FT> v)
 /// place); a hole point on a segment or outside every loop; a loop with the domain on both
 /// sides; hole points on both sides of a loop (named by the one on the side nesting puts in
 /// the domain: inside a top loop, in an island); a point on no segment that lies on a segment
-/// or outside the domain.
+/// or outside the domain; a regional attribute's point on a segment or outside the domain, or
+/// two different attributes (or maximum areas) in one region.
 template <class K>
 Domain_loops_2<K> extract_loops(const Domain_2<K>& domain, const K& traits = K())
 {

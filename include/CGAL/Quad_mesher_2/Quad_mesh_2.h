@@ -49,9 +49,33 @@ struct Quad_mesh_2
   /// edges with the quads; they change neither `points` nor `quads`.
   std::vector<Boundary_edge> boundary_edges;
 
+  /// A region of the mesh: the quads of one face of the domain, or of every face that has
+  /// one regional attribute (`Domain_2::region_attributes`: one material). `tag` (> 0) names
+  /// it in the outputs: the attribute itself where it is an integer from 1 to 2^31 - 1, else
+  /// the next tag no region has, in the order of the domain's regions.
+  struct Region
+  {
+    int tag = 1;
+    bool has_attribute = false;
+    double attribute = 0; ///< 0 where there is none, as Triangle gives
+  };
+  /// For a mesh of a whole domain (with `boundary_edges`): its regions, in the order of the
+  /// domain's (`Boundary_loop_2::region`), those of one attribute merged at the first; empty
+  /// after the earlier stages and for a point cloud.
+  std::vector<Region> regions;
+  /// the region of each quad, an index into `regions` (empty when `regions` is)
+  std::vector<std::size_t> quad_regions;
+
   std::size_t number_of_vertices() const { return points.size(); }
   std::size_t number_of_quads() const { return quads.size(); }
-  void clear() { points.clear(); quads.clear(); boundary_edges.clear(); }
+  void clear()
+  {
+    points.clear();
+    quads.clear();
+    boundary_edges.clear();
+    regions.clear();
+    quad_regions.clear();
+  }
 };
 
 namespace internal {

@@ -15,6 +15,7 @@
 #include <CGAL/Quad_mesher_2/Quad_mesh_2.h>
 #include <CGAL/Quad_mesher_2/internal/apply_templates.h>
 #include <CGAL/Quad_mesher_2/internal/boundary_markers.h>
+#include <CGAL/Quad_mesher_2/internal/mesh_regions.h>
 #include <CGAL/Quad_mesher_2/internal/buffer_layers.h>
 #include <CGAL/Quad_mesher_2/internal/buffer_zone_clearance.h>
 #include <CGAL/Quad_mesher_2/internal/insert_points.h>
@@ -287,14 +288,16 @@ public:
   /// round if a later one was worse). The rounds end too once the refinement a round asked
   /// for splits no cell (finer cells are refused there): the next round would repeat it.
   /// A mesh of the whole domain (`last` is `Stage::BUFFER2`) comes with its `boundary_edges`
-  /// and their markers; with `Stage::SMOOTHING` it is smoothed first (`smooth_mesh()`).
+  /// and their markers, and its `regions`; with `Stage::SMOOTHING` it is smoothed first (`smooth_mesh()`).
   Mesh run(Stage last)
   {
     Mesh mesh = run_rounds(last);
     if(last >= Stage::SMOOTHING)
       smooth_mesh(mesh);
-    if(last >= Stage::BUFFER2)
+    if(last >= Stage::BUFFER2) {
       mesh.boundary_edges = internal::marked_boundary_edges(mesh, m_domain, m_loops);
+      internal::assign_regions(mesh, m_domain, m_loops);
+    }
     return mesh;
   }
 
@@ -728,6 +731,8 @@ private:
       sizing.refine_to_point_spacing();
     if(m_criteria.sizing_field())
       sizing.refine_to_sizing_field();
+    if(!m_domain.is_point_cloud())
+      sizing.refine_to_region_areas();
     if(!m_domain.is_point_cloud() && m_criteria.resolve_narrow_regions())
       sizing.refine_narrow_regions();
     m_requests_refined = m_refinement_queue.refine(*m_tree);

@@ -8,7 +8,9 @@
 #include <CGAL/Quad_mesher_2/Domain_2.h>
 #include <CGAL/Quad_mesher_2/IO/read_node.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <exception>
 #include <istream>
@@ -177,10 +179,18 @@ inline bool read_poly_holes(Text_lines& r, Poly_section<std::array<double, 2> >&
   return true;
 }
 
+/// A regional attribute as read: the point, the attribute and the maximum area (0: none).
+struct Poly_region
+{
+  std::array<double, 2> point;
+  double attribute = 0, max_area = 0;
+};
+
 /// Reads the optional regional attributes: `<#regions>`, then `<index> <x> <y> <attribute>
-/// [<maximum area>]` (Triangle requires the one value, the second is optional). Read to check
-/// them and ignored; whatever follows is an error, not silently dropped.
-inline bool read_poly_regions(Text_lines& r, std::string& msg)
+/// [<maximum area>]` (Triangle requires the one value, the second is optional; a negative
+/// maximum area means none, as in Triangle). Whatever follows is an error, not silently
+/// dropped.
+inline bool read_poly_regions(Text_lines& r, Poly_section<Poly_region>& regions, std::string& msg)
 {
   if(r.next()) {
     const std::size_t region_header_line = r.line();
@@ -193,9 +203,8 @@ inline bool read_poly_regions(Text_lines& r, std::string& msg)
     if(nregions < 0) { msg = r.here() + "the number of regional attributes is negative (" + std::to_string(nregions) + ")"; return false; }
     if(r.size() > 1) { msg = r.here() + "unexpected text " + quote(r[1]) + " after the regional-attribute header"; return false; }
     const std::size_t nr = static_cast<std::size_t>(nregions);
-    std::size_t region_base = 0;
     for(std::size_t i = 0; i < nr; ++i) {
-      if(!next_indexed_line(r, i, nr, region_base, "region", "regions", "the regional-attribute header", region_header_line,
+      if(!next_indexed_line(r, i, nr, regions.base, "region", "regions", "the regional-attribute header", region_header_line,
                             false, msg))
         return false;
       if(r.size() < 4) {
@@ -210,14 +219,18 @@ inline bool read_poly_regions(Text_lines& r, std::string& msg)
         return false;
       }
       if(r.size() > 5) { msg = r.here() + "unexpected text " + quote(r[5]) + " after region " + std::string(r[0]); return false; }
+      Poly_region region{ { x, y } };
       for(std::size_t t = 3; t < r.size(); ++t) {
         double value = 0;
-        if(!parse_double(r[t], value)) {
-          msg = r.here() + "expected a number for the " + (t == 3 ? "attribute" : "maximum area") + " of region " +
+        if(!parse_double(r[t], value) || !std::isfinite(value)) {
+          msg = r.here() + "expected a finite number for the " + (t == 3 ? "attribute" : "maximum area") + " of region " +
                 std::string(r[0]) + ", found " + quote(r[t]);
           return false;
         }
+        (t == 3 ? region.attribute : region.max_area) = t == 3 ? value : (std::max)(value, 0.0);
       }
+      regions.items.push_back(region);
+      regions.lines.push_back(r.line());
     }
     if(r.next()) {
       msg = r.here() + "unexpected text " + quote(r[0]) + " after the last section (the regional attributes, header line " +
@@ -237,9 +250,10 @@ bool read_poly_text(Text_lines& r, const std::string& node_file, Domain_2<K>& ou
   long long count = 0;
   Poly_section<std::array<std::size_t, 2> > segments;
   Poly_section<std::array<double, 2> > holes;
+  Poly_section<Poly_region> regions;
   std::vector<int> markers;
   if(!read_poly_vertices(r, node_file, v, count, msg) || !read_poly_segments(r, v, segments, markers, msg) ||
-     !read_poly_holes(r, holes, msg) || !read_poly_regions(r, msg))
+     !read_poly_holes(r, holes, msg) || !read_poly_regions(r, regions, msg))
     return false;
   append_points<K>(v.xy, out.points);
   out.segments = std::move(segments.items);
@@ -248,6 +262,10 @@ bool read_poly_text(Text_lines& r, const std::string& node_file, Domain_2<K>& ou
   out.point_labels = file_labels(v.base, v.lines, count == 0 ? node_file : std::string());
   out.segment_labels = file_labels(segments.base, segments.lines);
   out.hole_labels = file_labels(holes.base, holes.lines);
+  for(const Poly_region& region : regions.items)
+    out.region_attributes.push_back({ typename K::Point_2(typename K::FT(region.point[0]), typename K::FT(region.point[1])),
+                                      region.attribute, region.max_area });
+  out.region_attribute_labels = file_labels(regions.base, regions.lines);
   return true;
 }
 
@@ -280,7 +298,8 @@ inline std::string node_file_beside(const std::string& poly_file)
 /// `<index> <x> <y> [attributes...] [marker]`), segments (`<#segments> [<#markers>]`, then
 /// `<index> <a> <b> [marker]`), holes (`<#holes>`, then `<index> <x> <y>`). An optional
 /// regional-attributes section after the holes (`<#regions>`, then `<index> <x> <y>
-/// <attribute> [<maximum area>]`) is checked and ignored; anything after it, or after the
+/// <attribute> [<maximum area>]`) goes to `Domain_2::region_attributes` (a maximum area of
+/// 0 or below is none, as in Triangle); anything after it, or after the
 /// holes if it is absent, is an error. `#` starts a comment. Vertex
 /// indices are consecutive from 0 or 1: the first vertex decides, as in Triangle, and segment
 /// endpoints use the same base; segment and hole numbers are consecutive from 0 or 1 too.

@@ -58,7 +58,9 @@ namespace IO {
 /// `*NODE` with one line `n, x, y` per point (node numbers from 1 in the order of
 /// `mesh.points`); `*ELEMENT, TYPE=CPS4, ELSET=domain` with one line `e, a, b, c, d` per quad
 /// (4-node plane-stress elements numbered from 1, nodes counter-clockwise; the set `domain`
-/// holds them all); and per boundary marker of `mesh.boundary_edges`, by increasing marker,
+/// holds them all); for a mesh of several regions, or of one with a regional attribute
+/// (`Quad_mesh_2::regions`), `*ELSET, ELSET=region_3` with the elements of the region of tag
+/// 3, for a `*SOLID SECTION` each; and per boundary marker of `mesh.boundary_edges`, by increasing marker,
 /// `*NSET, NSET=marker_3` (`marker_m3` for -3) with the nodes of its edges, and the element
 /// surface `*SURFACE, NAME=marker_3, TYPE=ELEMENT` of the element faces on its edges (face
 /// `Sk` of an element runs from its node k to its next node), made of the element sets
@@ -86,6 +88,16 @@ bool write_INP(std::ostream& os, const Quad_mesh_2<Point_2>& mesh)
     i = 1;
     for(const auto& q : mesh.quads)
       text << i++ << ", " << q[0] + 1 << ", " << q[1] + 1 << ", " << q[2] + 1 << ", " << q[3] + 1 << '\n';
+    if(Quad_mesher_2::internal::has_named_regions(mesh)) {
+      const std::vector<std::vector<std::size_t>> quads = Quad_mesher_2::internal::region_quads(mesh);
+      std::vector<std::size_t> elements;
+      for(std::size_t r = 0; r < quads.size(); ++r) {
+        elements.clear();
+        for(std::size_t q : quads[r]) elements.push_back(q + 1);
+        text << "*ELSET, ELSET=" << Quad_mesher_2::internal::region_name(mesh.regions[r].tag).c_str() << '\n';
+        Quad_mesher_2::internal::write_inp_numbers(text, elements);
+      }
+    }
     std::vector<std::size_t> nodes;
     for(const auto& g : Quad_mesher_2::internal::marker_groups(mesh)) {
       nodes.clear();

@@ -28,7 +28,7 @@ namespace IO {
 /// SU2's configuration names it so) and `MARKER_ELEMS=` with one line `3 a b` (type 3, the
 /// line) per boundary edge, directed with the domain on its left. Coordinates are converted
 /// with `CGAL::to_double` and written as the shortest decimals that read back as the same
-/// doubles.
+/// doubles. A single-zone SU2 file has no place for `mesh.regions`: they are left out.
 /// Returns `false`, without throwing, if the stream fails or an index is out of range.
 template <class Point_2>
 bool write_SU2(std::ostream& os, const Quad_mesh_2<Point_2>& mesh)

@@ -49,6 +49,29 @@ void write_vtu_cells(std::ostream& out, const Quad_mesh_2<Point_2>& mesh)
          "      </Cells>\n";
 }
 
+/// the cell fields `region` (each quad's region tag, 0 on the lines) and `attribute` (its
+/// regional attribute, 0 where none and on the lines)
+template <class Point_2>
+void write_vtu_regions(std::ostream& out, const Quad_mesh_2<Point_2>& mesh)
+{
+  const std::size_t lines = mesh.boundary_edges.size();
+  Quad_mesher_2::internal::Text_buffer text(out);
+  out << "        <DataArray type=\"Int32\" Name=\"region\" format=\"ascii\">\n";
+  for(std::size_t r : mesh.quad_regions)
+    text << mesh.regions[r].tag << '\n';
+  for(std::size_t i = 0; i < lines; ++i)
+    text << "0\n";
+  text.flush();
+  out << "        </DataArray>\n"
+         "        <DataArray type=\"Float64\" Name=\"attribute\" format=\"ascii\">\n";
+  for(std::size_t r : mesh.quad_regions)
+    text << mesh.regions[r].attribute << '\n';
+  for(std::size_t i = 0; i < lines; ++i)
+    text << "0\n";
+  text.flush();
+  out << "        </DataArray>\n";
+}
+
 /// `<CellData>`: the quads' quality fields, neutral values on the lines (1 and 0: a filter
 /// for bad quads never picks one), and every cell's `marker`, 0 on the quads.
 template <class Point_2>
@@ -84,8 +107,10 @@ void write_vtu_cell_data(std::ostream& out, const Quad_mesh_2<Point_2>& mesh)
   for(const auto& e : mesh.boundary_edges)
     text << e.marker << '\n';
   text.flush();
-  out << "        </DataArray>\n"
-         "      </CellData>\n";
+  out << "        </DataArray>\n";
+  if(!mesh.quad_regions.empty())
+    write_vtu_regions(out, mesh);
+  out << "      </CellData>\n";
 }
 
 } // namespace internal
@@ -95,10 +120,12 @@ void write_vtu_cell_data(std::ostream& out, const Quad_mesh_2<Point_2>& mesh)
 /// points (z = 0, `Float64`, the shortest decimals that read back as the same doubles); the
 /// cells, with `Int64` connectivity and offsets: the quads first, as `VTK_QUAD` (9) in the
 /// order of `mesh.quads`, so that cell i is quad i as before lines were written, then
-/// `mesh.boundary_edges` as `VTK_LINE` (3); and three cell fields:
+/// `mesh.boundary_edges` as `VTK_LINE` (3); and three or five cell fields:
 /// `scaled_jacobian` (minimum over the corners) and `max_angle_deviation` (largest
 /// |angle - 90| over the corners, in degrees), both computed in double, for colouring (1 and
-/// 0 on the lines), and `marker`, `Int32`, the boundary marker of each line (0 on the quads).
+/// 0 on the lines), and `marker`, `Int32`, the boundary marker of each line (0 on the quads);
+/// with `mesh.quad_regions`, two more: `region`, `Int32`, each quad's region tag, and
+/// `attribute`, `Float64`, its regional attribute (0 where none; both 0 on the lines).
 /// Returns `false`, without throwing, if the stream fails or an index is out of range.
 /// The stream's precision and format flags are restored.
 template <class Point_2>

@@ -133,6 +133,8 @@ public:
   const Point_2& point(std::size_t s, int e) const { return m_domain.points[m_ends[s][e]]; }
   const Segment_2& segment(std::size_t s) const { return m_segments[s]; }
   const Bbox_2& box(std::size_t s) const { return m_boxes[s]; }
+  /// the loop (index into `Domain_loops_2::loops`) segment `s` belongs to
+  std::size_t loop_of(std::size_t s) const { return m_loop[s]; }
 
   /// calls `f(s)` for every segment `s` whose box overlaps `b`
   template <class F>
@@ -140,13 +142,19 @@ public:
 
   /// `true` if `p`, which lies on no segment, is inside the domain: the innermost loop whose
   /// inside holds `p` (upward ray, half-open crossing rule) must be an outer loop.
-  bool in_domain(const Point_2& p) const
+  bool in_domain(const Point_2& p) const { return region_at(p) != outside; }
+
+  static constexpr std::size_t outside = std::size_t(-1);
+  /// The region (`Boundary_loop_2::region`) holding `p`, or `outside`; a point on a segment
+  /// that is not vertical is in the region of the segment's loop.
+  std::size_t region_at(const Point_2& p) const
   {
     const auto cmp_x = m_traits.compare_x_2_object();
     const auto orient = m_traits.orientation_2_object();
     const Bbox_2 pb = m_traits.construct_bbox_2_object()(p);
     const Bbox_2 ray(pb.xmin(), pb.ymin(), pb.xmax(), std::numeric_limits<double>::infinity());
     std::vector<unsigned char> parity(m_loops.loops.size(), 0);
+    std::size_t on = outside;
     m_tree->query(ray, [&](std::size_t s) {
       const Point_2& a = point(s, 0);
       const Point_2& b = point(s, 1);
@@ -156,17 +164,19 @@ public:
       const Point_2& left = (ca == LARGER) ? b : a;
       const Point_2& right = (ca == LARGER) ? a : b;
       const Orientation o = orient(left, right, p);
-      CGAL_assertion(o != COLLINEAR);  // p is on no segment
+      if(o == COLLINEAR) on = s; // on a vertical segment p is found inside or outside
       if(o == RIGHT_TURN) parity[m_loop[s]] ^= 1;  // p below the segment
     });
+    if(on != outside)
+      return m_loops.loops[m_loop[on]].region;
     int depth = -1;
-    bool inside = false;
+    std::size_t region = outside;
     for(std::size_t l = 0; l < parity.size(); ++l)
       if(parity[l] && m_loops.loops[l].depth > depth) {
         depth = m_loops.loops[l].depth;
-        inside = m_loops.loops[l].is_outer;
+        region = m_loops.loops[l].is_outer ? m_loops.loops[l].region : outside;
       }
-    return inside;
+    return region;
   }
 
 private:

@@ -251,6 +251,55 @@ public:
     });
   }
 
+  // Triangle's maximum areas (`Domain_2::Region_attribute::max_area`): no cell meeting a
+  // region larger than the square root of the region's, so its core quads keep within it.
+  // A cell meets the region if its centre or a corner lies in it, or a segment of the
+  // region's loops may cross it (by boxes).
+  void refine_to_region_areas()
+  {
+    const std::size_t none = std::size_t(-1);
+    std::vector<double> bound(m_loops.region_attributes.size(), HUGE_VAL);
+    double smallest = HUGE_VAL;
+    std::size_t smallest_attribute = none;
+    for(std::size_t r = 0; r < bound.size(); ++r) {
+      const std::size_t a = m_loops.region_attributes[r];
+      if(a == none || !(m_domain.region_attributes[a].max_area > 0)) continue;
+      bound[r] = std::sqrt(m_domain.region_attributes[a].max_area);
+      if(bound[r] < smallest) { smallest = bound[r]; smallest_attribute = a; }
+    }
+    if(smallest_attribute == none)
+      return;
+    // as the sizing field: the minimum size caps it, else it must fit in the depth
+    const int level = level_for_size(m_tree, smallest), cap = min_size_level(m_tree, m_criteria);
+    if(level > cap && !(m_criteria.min_size() > 0)) {
+      const auto& a = m_domain.region_attributes[smallest_attribute];
+      std::ostringstream msg;
+      msg.precision(17);
+      msg << "the maximum area " << a.max_area << " of regional attribute " << m_domain.region_attribute_label(smallest_attribute)
+          << " (" << CGAL::to_double(a.point.x()) << ", " << CGAL::to_double(a.point.y()) << ") needs quadtree depth " << level
+          << ", beyond " << m_tree.depth_limit();
+      throw Meshing_error(msg.str());
+    }
+    const Domain_segments<GeomTraits> boundary(m_domain, m_loops, m_traits);
+    auto bound_at = [&](const Point_2& p) {
+      const std::size_t r = boundary.region_at(p);
+      return r == boundary.outside ? HUGE_VAL : bound[r];
+    };
+    m_tree.refine([&](const Cell_key& k) {
+      const double side = m_tree.cell_side(k.level);
+      if(side <= smallest || k.level >= cap || outside_domain_box(k))
+        return false;
+      bool split = side > bound_at(m_tree.cell_center(k));
+      for(int c = 0; c < 4 && !split; ++c)
+        split = side > bound_at(m_tree.lattice_point(k.level, k.i + (c & 1), k.j + (c >> 1)));
+      if(!split)
+        boundary.query(m_tree.cell_rectangle(k).bbox(), [&](std::size_t s) {
+          split = split || side > bound[m_loops.loops[boundary.loop_of(s)].region];
+        });
+      return split;
+    });
+  }
+
   // Paper §4.2: more than two cells across every narrow region (narrow_regions.h).
   void refine_narrow_regions()
   {

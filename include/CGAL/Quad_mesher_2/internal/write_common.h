@@ -37,8 +37,9 @@ bool quad_indices_in_range(const Quad_mesh_2<Point_2>& mesh)
   return true;
 }
 
-/// `true` if every quad and boundary-edge index refers to an entry of `mesh.points` (the check
-/// of the writers that write the boundary edges).
+/// `true` if every quad and boundary-edge index refers to an entry of `mesh.points`, and the
+/// quads' regions are none or one per quad, each in `mesh.regions` (the check of the writers
+/// that write the boundary edges and regions).
 template <class Point_2>
 bool mesh_indices_in_range(const Quad_mesh_2<Point_2>& mesh)
 {
@@ -46,8 +47,34 @@ bool mesh_indices_in_range(const Quad_mesh_2<Point_2>& mesh)
   for(const auto& e : mesh.boundary_edges)
     if(e.v0 >= n || e.v1 >= n)
       return false;
+  if(!mesh.quad_regions.empty() && mesh.quad_regions.size() != mesh.quads.size())
+    return false;
+  for(std::size_t r : mesh.quad_regions)
+    if(r >= mesh.regions.size())
+      return false;
   return quad_indices_in_range(mesh);
 }
+
+/// Whether the writers write the mesh's regions: more than one, or one with an attribute. The
+/// mesh of a single region without one keeps the one group `domain`.
+template <class Point_2>
+bool has_named_regions(const Quad_mesh_2<Point_2>& mesh)
+{
+  return !mesh.quad_regions.empty() && (mesh.regions.size() > 1 || mesh.regions.front().has_attribute);
+}
+
+/// the quads of each region of `mesh`, in order
+template <class Point_2>
+std::vector<std::vector<std::size_t>> region_quads(const Quad_mesh_2<Point_2>& mesh)
+{
+  std::vector<std::vector<std::size_t>> quads(mesh.regions.size());
+  for(std::size_t q = 0; q < mesh.quad_regions.size(); ++q)
+    quads[mesh.quad_regions[q]].push_back(q);
+  return quads;
+}
+
+/// The name the writers give a region: `region_3` for tag 3.
+inline std::string region_name(int tag) { return "region_" + std::to_string(tag); }
 
 /// The boundary edges of one marker: indices into `Quad_mesh_2::boundary_edges`, in order.
 struct Marker_group
