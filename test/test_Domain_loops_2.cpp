@@ -346,6 +346,8 @@ TEST(Domain_loops_2, RegionsAndTheirAttributes)
   EXPECT_FALSE(loops.loops[2].is_outer);
   EXPECT_EQ(loops.loops[3].region, 2u);
   EXPECT_EQ(loops.region_attributes, (std::vector<std::size_t>{ 1, std::size_t(-1), 0 }));
+  EXPECT_EQ(CGAL::Quad_mesher_2::region_area(d, loops, 0), 100 - 36);
+  EXPECT_EQ(CGAL::Quad_mesher_2::region_area(d, loops, 2), 4);
 
   // errors name the attribute: outside the domain (in the hole), on a segment, two different
   // ones in a region, and not finite

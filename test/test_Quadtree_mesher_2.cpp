@@ -21,6 +21,7 @@
 #include <cstdio>
 #include <map>
 #include <random>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -449,6 +450,16 @@ TEST(Quadtree_mesher_2, every_quad_carries_its_region)
   EXPECT_LE(largest[1], max_area);
   EXPECT_GT(count[1], std::size_t(0.48 / max_area)); // the island's area is 0.48
   EXPECT_GT(area[0] / double(count[0]), 4 * area[1] / double(count[1])); // the land is not refined
+
+  // a maximum area beyond the cell budget is an error before any cell is made
+  d.region_attributes[1].max_area = 1e-10;
+  try {
+    QM::make_quad_mesh_2(d);
+    ADD_FAILURE() << "no Meshing_error";
+  } catch(const QM::Meshing_error& e) {
+    EXPECT_NE(std::string(e.what()).find("maximum areas need about 7.04375e+09 quadtree cells"), std::string::npos)
+      << e.what();
+  }
 }
 
 TEST(Quadtree_mesher_2, stage_timings_are_recorded)

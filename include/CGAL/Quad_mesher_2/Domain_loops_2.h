@@ -599,23 +599,44 @@ Domain_loops_2<K> extract_loops(const Domain_2<K>& domain, const K& traits = K()
   return x.run();
 }
 
+namespace internal {
+
+/// the sum of the signed areas of the loops `take(loop)` picks, in `FT`
+template <class K, class Take>
+typename K::FT loops_area(const Domain_2<K>& domain, const Domain_loops_2<K>& loops, Take take, const K& traits)
+{
+  typedef typename K::FT FT;
+  const auto area = traits.compute_area_2_object();
+  std::vector<FT> terms;
+  for(const auto& loop : loops.loops) {
+    if(!take(loop)) continue;
+    const auto& v = loop.vertices;
+    std::vector<FT> t;
+    for(std::size_t i = 1; i + 1 < v.size(); ++i)
+      t.push_back(area(domain.points[v[0]], domain.points[v[i]], domain.points[v[i + 1]]));
+    terms.push_back(loops_balanced_sum(std::move(t)));
+  }
+  return loops_balanced_sum(std::move(terms));
+}
+
+} // namespace internal
+
 /// \ingroup PkgQuadMesher2Ref
 /// The area of the domain: the signed areas of the loops (holes negative), summed in `FT`
 /// (exact with an exact-constructions kernel).
 template <class K>
 typename K::FT domain_area(const Domain_2<K>& domain, const Domain_loops_2<K>& loops, const K& traits = K())
 {
-  typedef typename K::FT FT;
-  const auto area = traits.compute_area_2_object();
-  std::vector<FT> terms;
-  for(const auto& loop : loops.loops) {
-    const auto& v = loop.vertices;
-    std::vector<FT> t;
-    for(std::size_t i = 1; i + 1 < v.size(); ++i)
-      t.push_back(area(domain.points[v[0]], domain.points[v[i]], domain.points[v[i + 1]]));
-    terms.push_back(internal::loops_balanced_sum(std::move(t)));
-  }
-  return internal::loops_balanced_sum(std::move(terms));
+  return internal::loops_area(domain, loops, [](const Boundary_loop_2<K>&) { return true; }, traits);
+}
+
+/// \ingroup PkgQuadMesher2Ref
+/// The area of region `region` of the domain (`Boundary_loop_2::region`), as `domain_area()`.
+template <class K>
+typename K::FT region_area(const Domain_2<K>& domain, const Domain_loops_2<K>& loops, std::size_t region,
+                           const K& traits = K())
+{
+  return internal::loops_area(domain, loops, [&](const Boundary_loop_2<K>& loop) { return loop.region == region; }, traits);
 }
 
 /// \ingroup PkgQuadMesher2Ref

@@ -280,6 +280,7 @@ public:
           << ", beyond " << m_tree.depth_limit();
       throw Meshing_error(msg.str());
     }
+    check_region_area_budget(bound);
     const Domain_segments<GeomTraits> boundary(m_domain, m_loops, m_traits);
     auto bound_at = [&](const Point_2& p) {
       const std::size_t r = boundary.region_at(p);
@@ -298,6 +299,25 @@ public:
         });
       return split;
     });
+  }
+
+  // The cells the maximum areas ask for at the least (each region's area over its cells'),
+  // counted before any is made: a budget error now, not after seconds and gigabytes.
+  void check_region_area_budget(const std::vector<double>& bound) const
+  {
+    double cells = 0;
+    for(std::size_t r = 0; r < bound.size(); ++r)
+      if(bound[r] < HUGE_VAL) {
+        const double side = m_tree.cell_side(level_for_size(m_tree, bound[r]));
+        cells += CGAL::to_double(region_area(m_domain, m_loops, r, m_traits)) / (side * side);
+      }
+    if(cells <= double(m_criteria.max_cells()))
+      return;
+    std::ostringstream msg;
+    msg << "the regional attributes' maximum areas need about " << cells
+        << " quadtree cells, more than the cell budget of " << m_criteria.max_cells()
+        << "; raise the areas or the cell budget";
+    throw Meshing_error(msg.str());
   }
 
   // Paper §4.2: more than two cells across every narrow region (narrow_regions.h).
