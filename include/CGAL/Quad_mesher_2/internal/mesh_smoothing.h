@@ -74,14 +74,18 @@ struct Smoothing_quad_shape
   /// the smoothing's energy of the quad: over its corners, cos^2 plus three times its excess
   /// over 1/4 (angles outside [60, 120] weigh most), plus 1/2 for an angle outside [60, 120]
   /// (reached within 1e-3 of cos^2 past 1/4, 0.07 degrees, so that differences see it); plus
-  /// log(r^2 / 9) for an aspect ratio r over 3. The step counts what the stage is measured by:
-  /// the angles at a vertex of three quads add up to 360 degrees, and one of them at 121 is
-  /// then better than all three at 120.3.
+  /// log(r^2 / 9) for an aspect ratio r over 3, and 20 log(r^2 / 25) more over 5. The step
+  /// counts what the stage is measured by: the angles at a vertex of three quads add up to
+  /// 360 degrees, and one of them at 121 is then better than all three at 120.3. An aspect
+  /// ratio over 5 outweighs any angle within the bound: the quad at a sharp input corner,
+  /// long and thin with its other angles near 90 or 120, widens towards 135 at its far end.
   double energy() const
   {
     double e = 0;
     for(double c2 : cos2)
       e += c2 + 3.0 * (std::max)(0.0, c2 - 0.25) + 0.5 * (std::min)(1.0, (std::max)(0.0, (c2 - 0.25) / 1e-3));
+    if(aspect2 > max_aspect2)
+      e += 20.0 * std::log(aspect2 / max_aspect2);
     return aspect2 > 9.0 ? e + std::log(aspect2 / 9.0) : e;
   }
 };
