@@ -440,8 +440,15 @@ TEST(CurveDecomposition, DomainWithHole)
   d.segment_markers.insert(d.segment_markers.end(), hole.size(), 9);
   d.points.push_back(Point_2(-6, 0.5));  // a point on no segment
   d.holes.push_back(Point_2(1, 0.25));
+  d.region_attributes = { { Point_2(-6, -0.5), 3, 0.5 } };
+  d.region_attribute_labels = { "1 (line 40)" };
 
   const Domain r = CGAL::Quad_mesher_2::decompose_domain_curves<K>(d, Options());
+  ASSERT_EQ(r.region_attributes.size(), 1u); // kept, and how the user knows it
+  EXPECT_TRUE(r.region_attributes[0].point == d.region_attributes[0].point);
+  EXPECT_EQ(r.region_attributes[0].attribute, 3);
+  EXPECT_EQ(r.region_attributes[0].max_area, 0.5);
+  EXPECT_EQ(r.region_attribute_labels, d.region_attribute_labels);
   ASSERT_GT(r.points.size(), d.points.size());
   for(std::size_t i = 0; i < d.points.size(); ++i) EXPECT_TRUE(r.points[i] == d.points[i]) << "point " << i << " moved";
   ASSERT_EQ(r.holes.size(), 1u);

@@ -391,6 +391,8 @@ TEST(IO_read, PolyMalformedCases)
      "region 1 needs two coordinates and an attribute"},
     {"region_bad_area", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n0\n1\n1 0.2 0.2 7 big\n", 8,
      "expected a finite number for the maximum area of region 1"},
+    {"region_overflowing_area", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n0\n1\n1 0.2 0.2 1 -1e400\n", 8,
+     "expected a finite number for the maximum area of region 1, found \"-1e400\""},
     {"region_infinite_attribute", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n0\n1\n1 0.2 0.2 inf\n", 8,
      "expected a finite number for the attribute of region 1, found \"inf\""},
     {"region_trailing_garbage", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n0 0\n0\n1\n1 0.2 0.2 7 0.1 9\n", 8, "unexpected text"},

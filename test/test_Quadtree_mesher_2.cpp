@@ -460,6 +460,10 @@ TEST(Quadtree_mesher_2, every_quad_carries_its_region)
     EXPECT_NE(std::string(e.what()).find("maximum areas need about 7.04375e+09 quadtree cells"), std::string::npos)
       << e.what();
   }
+  // the minimum size caps it, as it caps the sizing field
+  Criteria capped;
+  capped.set_min_size(0.05);
+  EXPECT_NO_THROW(QM::make_quad_mesh_2(d, capped));
 }
 
 TEST(Quadtree_mesher_2, stage_timings_are_recorded)

@@ -275,6 +275,38 @@ TEST(Boundary_layers, the_shared_air_foils_keep_every_layer_angle_within_22_5_an
   }
 }
 
+// A disc in a far field, the field's regional attribute with a maximum area: the cells beyond
+// the layers keep to it, every quad is in the field's region; an attribute within the
+// layers is an error that says so.
+TEST(Boundary_layers, regional_attributes_reach_the_cells_beyond_the_layers)
+{
+  QM::Domain_2<K> d = qm2_test::polygons({ qm2_test::rectangle(-2, -2, 2, 2), qm2_test::disc(0, 0, 0.5, 32) },
+                                         { Point_2(0, 0) });
+  const double max_area = 0.01;
+  d.region_attributes = { { Point_2(1.5, 1.5), 4, max_area } };
+  const Layered l = mesh_with_layers(d, 4, 1e-3, 1.2);
+  expect_valid_with_angles(l, 20);
+  ASSERT_EQ(l.mesh.regions.size(), 1u);
+  EXPECT_EQ(l.mesh.regions[0].tag, 4);
+  EXPECT_EQ(l.mesh.quad_regions, std::vector<std::size_t>(l.mesh.quads.size(), 0));
+  std::size_t above = 0;
+  for(const auto& q : l.mesh.quads) {
+    const double a = CGAL::to_double(CGAL::area(l.mesh.points[q[0]], l.mesh.points[q[1]], l.mesh.points[q[2]])
+                                     + CGAL::area(l.mesh.points[q[0]], l.mesh.points[q[2]], l.mesh.points[q[3]]));
+    above += a > max_area ? 1 : 0;
+  }
+  EXPECT_EQ(above, 0u); // 16 / 0.01: without the bound the far field's quads are far larger
+  d.region_attributes[0].point = Point_2(0.5005, 0);
+  d.region_attribute_labels = { "1 (line 70)" };
+  try {
+    mesh_with_layers(d, 4, 1e-3, 1.2);
+    ADD_FAILURE() << "an attribute within the layers was taken";
+  } catch(const QM::Meshing_error& e) {
+    EXPECT_NE(std::string(e.what()).find("regional attribute 1 (line 70) (it must lie beyond the boundary layers)"),
+              std::string::npos) << e.what();
+  }
+}
+
 TEST(Boundary_layers, bad_values_are_clear_errors)
 {
   EXPECT_THROW(QM::Boundary_layer_criteria_2(0, 1e-3, 1.2), QM::Meshing_error);

@@ -1,11 +1,13 @@
 #!/usr/bin/env python3
 # Reads the .msh, .su2, .inp and .vtu that quad-mesher writes for one .poly with meshio (Debian's
 # python3-meshio), an implementation independent of ours, and checks that all four hold the same
-# quads and the same boundary markers: those of the .poly's segments.
+# quads and the same boundary markers: those of the .poly's segments; where the mesh has regions,
+# the same quads in each region's group.
 #
 #   read_solver_formats.py QUAD_MESHER INPUT.poly WORK_DIR
 #
 # Exit status 77 (which ctest takes for "skipped") when meshio is not installed.
+import collections
 import os
 import subprocess
 import sys
@@ -43,6 +45,25 @@ def count(mesh, kind):
 def line_markers(mesh, name):
     """The markers cell-data field `name` gives the line cells, as a set."""
     return {int(v) for i in blocks(mesh, "line") for v in mesh.cell_data[name][i]}
+
+
+def region_failures(msh, inp, vtu):
+    """Where the mesh has regions (the .vtu's field `region`): the same quads of each region
+    in the .msh's physical surface groups `region_<tag>` and the .inp's element sets."""
+    if "region" not in vtu.cell_data:
+        return []
+    tags = collections.Counter(int(v) for i in blocks(vtu, "quad") for v in vtu.cell_data["region"][i])
+    failures = []
+    surfaces = {n for n, (tag, dim) in msh.field_data.items() if dim == 2}
+    msh_tags = collections.Counter(int(v) for i in blocks(msh, "quad") for v in msh.cell_data["gmsh:physical"][i])
+    if surfaces != {"region_%d" % t for t in tags} or msh_tags != tags:
+        failures.append("msh: surface groups %s with %s quads, the .vtu's regions %s" % (sorted(surfaces), msh_tags, tags))
+    inp_tags = collections.Counter({int(n[len("region_"):]): sum(len(c) for c in cells)
+                                    for n, cells in inp.cell_sets.items() if n.startswith("region_")})
+    if inp_tags != tags:
+        failures.append("inp: region element sets %s, the .vtu's regions %s" % (inp_tags, tags))
+    print("regions", dict(tags))
+    return failures
 
 
 def main():
@@ -85,6 +106,7 @@ def main():
             failures.append("marker %d: the .inp's node set is not the nodes of the .vtu's lines" % k)
     if not np.array_equal(msh.points[:, :2], vtu.points[:, :2]) or not np.array_equal(su2.points, inp.points):
         failures.append("the formats' points differ")
+    failures += region_failures(msh, inp, vtu)
     for f in failures:
         print("FAIL:", f)
     return 1 if failures else 0

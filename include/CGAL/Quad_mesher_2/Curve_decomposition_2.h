@@ -654,6 +654,8 @@ Domain_2<K> decompose_domain_curves(const Domain_2<K>& domain, const Curve_decom
   out.points = domain.points;
   out.holes = domain.holes;
   out.hole_labels = domain.hole_labels;
+  out.region_attributes = domain.region_attributes;
+  out.region_attribute_labels = domain.region_attribute_labels;
   out.point_labels.reserve(domain.points.size());
   for(std::size_t i = 0; i < domain.points.size(); ++i) out.point_labels.push_back(domain.point_label(i));
   // each new segment keeps the marker of the control polygon's edge its span replaces

@@ -44,8 +44,9 @@ struct Domain_2
   typedef typename GeomTraits::Point_2 Point_2;
   typedef std::array<std::size_t, 2> Segment;
   /// a regional attribute: `attribute` for the region holding `point`; `max_area`, Triangle's
-  /// area bound (0: none), bounds the side of the quadtree cells in that region by its square
-  /// root
+  /// area bound (0: none), bounds the side of the quadtree cells meeting that region by its
+  /// square root: the core's quads keep within it, the buffer's beside corners may not (up to
+  /// a few times it), unlike Triangle's triangles
   struct Region_attribute
   {
     Point_2 point;

@@ -222,7 +222,8 @@ inline bool read_poly_regions(Text_lines& r, Poly_section<Poly_region>& regions,
       Poly_region region{ { x, y } };
       for(std::size_t t = 3; t < r.size(); ++t) {
         double value = 0;
-        if(!parse_double(r[t], value) || !std::isfinite(value)) {
+        // parse_double() gives an overflow as the largest double
+        if(!parse_double(r[t], value) || !(std::abs(value) < (std::numeric_limits<double>::max)())) {
           msg = r.here() + "expected a finite number for the " + (t == 3 ? "attribute" : "maximum area") + " of region " +
                 std::string(r[0]) + ", found " + quote(r[t]);
           return false;

@@ -63,7 +63,6 @@ struct Msh_surfaces
   std::vector<int> tags;
   std::vector<std::string> names;
   std::vector<std::vector<std::size_t>> curves;
-  std::vector<std::size_t> surface_of; // per point, the surface whose node block lists it
 };
 
 template <class Point_2>
@@ -83,14 +82,14 @@ Msh_surfaces msh_surfaces(const Quad_mesh_2<Point_2>& mesh, const std::vector<Ma
     s.names.push_back("domain");
   }
   // a boundary vertex lies in one surface: regions share no vertex
-  s.surface_of.assign(mesh.points.size(), 0);
+  std::vector<std::size_t> surface_of(mesh.points.size(), 0);
   for(std::size_t k = 0; k < s.quads.size(); ++k)
     for(std::size_t q : s.quads[k])
-      for(std::size_t v : mesh.quads[q]) s.surface_of[v] = k;
+      for(std::size_t v : mesh.quads[q]) surface_of[v] = k;
   s.curves.resize(s.quads.size());
   for(std::size_t g = 0; g < groups.size(); ++g)
     for(std::size_t e : groups[g].edges) {
-      std::vector<std::size_t>& curves = s.curves[s.surface_of[mesh.boundary_edges[e].v0]];
+      std::vector<std::size_t>& curves = s.curves[surface_of[mesh.boundary_edges[e].v0]];
       if(curves.empty() || curves.back() != g) curves.push_back(g);
     }
   return s;
@@ -142,30 +141,23 @@ void write_msh_entities(std::ostream& out, const Quad_mesh_2<Point_2>& mesh, con
   out << "$EndEntities\n";
 }
 
-/// `$Nodes`: one block per surface with its nodes (where a node is on several, the last
-/// one's), node tags 1..n in the order of `mesh.points`.
+/// `$Nodes`: one block on surface 1, node tags 1..n in the order of `mesh.points` (as every
+/// other writer numbers them; Gmsh takes the nodes of the other surfaces' quads from it).
 template <class Point_2>
-void write_msh_nodes(std::ostream& out, const Quad_mesh_2<Point_2>& mesh, const Msh_surfaces& surfaces)
+void write_msh_nodes(std::ostream& out, const Quad_mesh_2<Point_2>& mesh)
 {
   const std::size_t n = mesh.points.size();
   out << "$Nodes\n";
   if(n == 0) {
     out << "0 0 0 0\n";
   } else {
-    std::vector<std::vector<std::size_t>> nodes(surfaces.quads.size());
-    for(std::size_t i = 0; i < n; ++i) nodes[surfaces.surface_of[i]].push_back(i);
-    std::size_t blocks = 0;
-    for(const auto& block : nodes) blocks += block.empty() ? 0 : 1;
-    out << blocks << ' ' << n << " 1 " << n << '\n'; // numEntityBlocks numNodes minNodeTag maxNodeTag
+    out << "1 " << n << " 1 " << n << '\n'; // numEntityBlocks numNodes minNodeTag maxNodeTag
+    out << "2 1 0 " << n << '\n';           // entityDim entityTag parametric numNodesInBlock
     Quad_mesher_2::internal::Text_buffer text(out);
-    for(std::size_t k = 0; k < nodes.size(); ++k) {
-      if(nodes[k].empty()) continue;
-      text << "2 " << k + 1 << " 0 " << nodes[k].size() << '\n'; // entityDim entityTag parametric numNodesInBlock
-      for(std::size_t i : nodes[k])
-        text << i + 1 << '\n';
-      for(std::size_t i : nodes[k])
-        text << CGAL::to_double(mesh.points[i].x()) << ' ' << CGAL::to_double(mesh.points[i].y()) << " 0\n";
-    }
+    for(std::size_t i = 1; i <= n; ++i)
+      text << i << '\n';
+    for(const Point_2& p : mesh.points)
+      text << CGAL::to_double(p.x()) << ' ' << CGAL::to_double(p.y()) << " 0\n";
     text.flush();
   }
   out << "$EndNodes\n";
@@ -211,7 +203,7 @@ void write_msh_elements(std::ostream& out, const Quad_mesh_2<Point_2>& mesh, con
 
 /// \ingroup PkgQuadMesher2IO
 /// Writes `mesh` as a Gmsh MSH 4.1 ASCII file: `$MeshFormat` (4.1 0 8), `$Entities`,
-/// `$Nodes` (a block per surface, node tags 1..n in the order of `mesh.points`, z = 0)
+/// `$Nodes` (one block, node tags 1..n in the order of `mesh.points`, z = 0)
 /// and `$Elements` (a block of type 3, the 4-node quadrangle, per surface; quad q has
 /// element tag q + 1).
 ///
@@ -243,7 +235,7 @@ bool write_MSH(std::ostream& os, const Quad_mesh_2<Point_2>& mesh)
     out << std::setprecision(std::numeric_limits<double>::max_digits10);
     out << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
     internal::write_msh_entities(out, mesh, groups, internal::msh_physical_tags(groups), surfaces);
-    internal::write_msh_nodes(out, mesh, surfaces);
+    internal::write_msh_nodes(out, mesh);
     internal::write_msh_elements(out, mesh, groups, surfaces);
     return out.good();
   });

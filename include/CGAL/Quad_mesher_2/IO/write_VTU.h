@@ -108,7 +108,7 @@ void write_vtu_cell_data(std::ostream& out, const Quad_mesh_2<Point_2>& mesh)
     text << e.marker << '\n';
   text.flush();
   out << "        </DataArray>\n";
-  if(!mesh.quad_regions.empty())
+  if(Quad_mesher_2::internal::has_named_regions(mesh))
     write_vtu_regions(out, mesh);
   out << "      </CellData>\n";
 }
@@ -124,7 +124,8 @@ void write_vtu_cell_data(std::ostream& out, const Quad_mesh_2<Point_2>& mesh)
 /// `scaled_jacobian` (minimum over the corners) and `max_angle_deviation` (largest
 /// |angle - 90| over the corners, in degrees), both computed in double, for colouring (1 and
 /// 0 on the lines), and `marker`, `Int32`, the boundary marker of each line (0 on the quads);
-/// with `mesh.quad_regions`, two more: `region`, `Int32`, each quad's region tag, and
+/// for a mesh of several regions, or of one with a regional attribute (`mesh.regions`), two
+/// more: `region`, `Int32`, each quad's region tag, and
 /// `attribute`, `Float64`, its regional attribute (0 where none; both 0 on the lines).
 /// Returns `false`, without throwing, if the stream fails or an index is out of range.
 /// The stream's precision and format flags are restored.

@@ -421,7 +421,7 @@ private:
 };
 
 /// The domain bounded by the offsets: `domain` with each wall loop replaced by its offset
-/// (the same holes, isolated points and other loops). `offset_first[i]` is the index in the
+/// (the same holes, regional attributes, isolated points and other loops). `offset_first[i]` is the index in the
 /// result's points of wall `i`'s first offset point; its points follow in offset order.
 template <class K>
 Domain_2<K> offset_domain(const Domain_2<K>& domain, const Domain_loops_2<K>& loops,
@@ -467,6 +467,10 @@ Domain_2<K> offset_domain(const Domain_2<K>& domain, const Domain_loops_2<K>& lo
   }
   out.holes = domain.holes;
   out.hole_labels = domain.hole_labels;
+  // their maximum areas size the cells beyond the layers; a point within them is an error
+  out.region_attributes = domain.region_attributes;
+  for(std::size_t r = 0; r < domain.region_attributes.size(); ++r)
+    out.region_attribute_labels.push_back(domain.region_attribute_label(r) + " (it must lie beyond the boundary layers)");
   return out;
 }
 

@@ -274,9 +274,9 @@ public:
     if(level > cap && !(m_criteria.min_size() > 0)) {
       const auto& a = m_domain.region_attributes[smallest_attribute];
       std::ostringstream msg;
-      msg.precision(17);
-      msg << "the maximum area " << a.max_area << " of regional attribute " << m_domain.region_attribute_label(smallest_attribute)
-          << " (" << CGAL::to_double(a.point.x()) << ", " << CGAL::to_double(a.point.y()) << ") needs quadtree depth " << level
+      msg << "the maximum area " << loops_format_double(a.max_area) << " of regional attribute "
+          << m_domain.region_attribute_label(smallest_attribute) << " " << loops_format_point(a.point, m_traits)
+          << " needs quadtree depth " << level
           << ", beyond " << m_tree.depth_limit();
       throw Meshing_error(msg.str());
     }
@@ -301,14 +301,15 @@ public:
     });
   }
 
-  // The cells the maximum areas ask for at the least (each region's area over its cells'),
-  // counted before any is made: a budget error now, not after seconds and gigabytes.
+  // The cells the maximum areas ask for at the least (each region's area over its cells',
+  // the minimum size capping them), counted before any is made: a budget error now, not
+  // after seconds and gigabytes.
   void check_region_area_budget(const std::vector<double>& bound) const
   {
     double cells = 0;
     for(std::size_t r = 0; r < bound.size(); ++r)
       if(bound[r] < HUGE_VAL) {
-        const double side = m_tree.cell_side(level_for_size(m_tree, bound[r]));
+        const double side = m_tree.cell_side((std::min)(level_for_size(m_tree, bound[r]), min_size_level(m_tree, m_criteria)));
         cells += CGAL::to_double(region_area(m_domain, m_loops, r, m_traits)) / (side * side);
       }
     if(cells <= double(m_criteria.max_cells()))
