@@ -135,6 +135,31 @@ TEST(Narrow_regions, a_slit_of_the_outside_needs_cells_as_wide_as_it)
 // is the near side's neighbour along the loop, so a walk that gave up after its first sample
 // never found the gap. Both long sides' whole length needs more than two cells across, and
 // the full mesh follows (the buffer layers failed on 1 x 0.1 when the channel was not found).
+// Two prongs whose tops are collinear, turned: the other prong's top, beside this one's line
+// to rounding, lies across the slit's mouth, outside, as it does unturned. Read as a gap of
+// the domain (the sign of a rounded determinant), it left a blob of cells a tenth of the
+// slit's width at one top corner of every prong of a turned comb.
+TEST(Narrow_regions, a_collinear_neighbour_across_a_slit_is_outside_turned_or_not)
+{
+  const double slit = 0.3;
+  const double xs[] = { 0, 2 + slit, 2 + slit, 1 + slit, 1 + slit, 1, 1, 0 };
+  const double ys[] = { 0, 0, 5, 5, 1, 1, 5, 5 };
+  for(double degrees : { 0.0, 33.0, 61.0 }) {
+    SCOPED_TRACE(degrees);
+    const double c = std::cos(degrees * CGAL_PI / 180), s = std::sin(degrees * CGAL_PI / 180);
+    auto turned = [&](double x, double y) { return K::Point_2(c * x - s * y, s * x + c * y); };
+    QM::Domain_2<K> d;
+    for(int k = 0; k < 8; ++k) d.points.push_back(turned(xs[k], ys[k]));
+    close_loop(d, 0);
+    QM::Quadtree_mesher_2<K> tree_only(d, quadtree_only());
+    tree_only.run(QM::Stage::QUADTREE);
+    const auto& tree = tree_only.quadtree();
+    // within the prongs' tops, a fifth of the slit from the corners beside it
+    for(const auto& [x, y] : { std::pair<double, double>(1 - slit / 5, 5 - slit / 5), { 1 + 1.2 * slit, 5 - slit / 5 } })
+      EXPECT_GT(tree.cell_side(tree.locate(turned(x, y)).level), slit / 4) << "at (" << x << ", " << y << ") unturned";
+  }
+}
+
 TEST(Narrow_regions, a_thin_rectangle_is_narrow_all_along)
 {
   for(double w : { 0.1, 0.01 }) {

@@ -32,7 +32,9 @@ namespace internal {
 // <= w/4 at the sample, at that nearest point and halfway between them. Parts facing each
 // other across the outside (a slit between two prongs) need only cells no wider than the
 // slit, which no cell then spans: the clearance removes the cells beside it, and the buffer
-// fills each side on its own. So a slit of width d counts as a gap of width 4d.
+// fills each side on its own. So a slit of width d counts as a gap of width 4d. A point
+// beside the segment's line, to rounding, counts as outside, as one exactly on it does: the
+// next prong's top, collinear with this one's, lies across the slit's mouth however turned.
 // A size field: measured in doubles (the approximate kernel); what it decides on the input,
 // which segments are neighbours and which corners are convex, it decides on vertex indices
 // and with the traits' exact orientation.
@@ -137,7 +139,10 @@ private:
       const double d = std::sqrt(CGAL::squared_distance(c, q));
       if(!(d > 0) || d > reach)
         return;
-      const bool outside = CGAL::determinant(here.segment.to_vector(), c - q) <= 0;
+      // on the segment's line to rounding: outside (see the file comment)
+      const V dir = here.segment.to_vector();
+      const double side = CGAL::determinant(dir, c - q);
+      const bool outside = side <= 1e-9 * std::sqrt(dir.squared_length()) * d;
       const double width = outside ? outside_gap_weight * d : d;
       if(width >= best)
         return;
