@@ -15,7 +15,7 @@
 #include <CGAL/Quad_mesher_2/internal/boundary_layer_extrusion.h>
 #include <CGAL/Quad_mesher_2/internal/boundary_layer_offset.h>
 #include <CGAL/Quad_mesher_2/internal/boundary_layer_smoothing.h>
-#include <CGAL/Quad_mesher_2/internal/boundary_markers.h>
+#include <CGAL/Quad_mesher_2/internal/mesh_regions.h>
 #include <CGAL/Quad_mesher_2/internal/quad_geometry.h>
 
 #include <algorithm>
@@ -118,8 +118,7 @@ public:
     internal::Layer_extrusion<GeomTraits> extrusion(m_domain, m_walls, fractions);
     internal::Layer_extrusion_result<Point_2> result = extrusion.run(std::move(outer));
     smooth_stacks(result);
-    result.mesh.boundary_edges = internal::marked_boundary_edges(result.mesh, m_domain, m_loops);
-    internal::assign_regions(result.mesh, m_domain, m_loops);
+    internal::mark_boundary_and_regions(result.mesh, m_domain, m_loops);
     make_report(result);
     record("boundary_layers", start);
     return std::move(result.mesh);

@@ -500,12 +500,12 @@ private:
     std::vector<std::size_t> attribute_of(m_regions, none);
     for(std::size_t r = 0; r < m_d.region_attributes.size(); ++r) {
       const auto& a = m_d.region_attributes[r];
-      std::size_t on_seg = none;
-      const std::size_t loop = locate(a.point, none, on_seg);
       const std::string name = "regional attribute " + m_d.region_attribute_label(r) + " " + pt(a.point);
       if(!std::isfinite(a.attribute) || !(a.max_area >= 0) || !std::isfinite(a.max_area))
         throw Meshing_error(name + " has attribute " + loops_format_double(a.attribute) + " and maximum area " +
                             loops_format_double(a.max_area) + ": both must be finite, the area not negative");
+      std::size_t on_seg = none;
+      const std::size_t loop = locate(a.point, none, on_seg);
       if(on_seg != none)
         throw Meshing_error(name + " lies on segment " + seg_str(on_seg) + ": it must be strictly inside the region it marks");
       if(!m_in_domain[loop == none ? m_loops.size() : loop])

@@ -14,13 +14,12 @@
 #include <CGAL/Quad_mesher_2/Point_anchor.h>
 #include <CGAL/Quad_mesher_2/Quad_mesh_2.h>
 #include <CGAL/Quad_mesher_2/internal/apply_templates.h>
-#include <CGAL/Quad_mesher_2/internal/boundary_markers.h>
-#include <CGAL/Quad_mesher_2/internal/mesh_regions.h>
 #include <CGAL/Quad_mesher_2/internal/buffer_layers.h>
 #include <CGAL/Quad_mesher_2/internal/buffer_zone_clearance.h>
-#include <CGAL/Quad_mesher_2/internal/insert_points.h>
 #include <CGAL/Quad_mesher_2/internal/grid_aligned_domain.h>
+#include <CGAL/Quad_mesher_2/internal/insert_points.h>
 #include <CGAL/Quad_mesher_2/internal/lattice_region.h>
+#include <CGAL/Quad_mesher_2/internal/mesh_regions.h>
 #include <CGAL/Quad_mesher_2/internal/mesh_smoothing.h>
 #include <CGAL/Quad_mesher_2/internal/quadtree_sizing.h>
 #include <CGAL/Quad_mesher_2/internal/refinement_rounds.h>
@@ -288,16 +287,15 @@ public:
   /// round if a later one was worse). The rounds end too once the refinement a round asked
   /// for splits no cell (finer cells are refused there): the next round would repeat it.
   /// A mesh of the whole domain (`last` is `Stage::BUFFER2`) comes with its `boundary_edges`
-  /// and their markers, and its `regions`; with `Stage::SMOOTHING` it is smoothed first (`smooth_mesh()`).
+  /// and their markers, and its `regions`; with `Stage::SMOOTHING` it is smoothed first
+  /// (`smooth_mesh()`).
   Mesh run(Stage last)
   {
     Mesh mesh = run_rounds(last);
     if(last >= Stage::SMOOTHING)
       smooth_mesh(mesh);
-    if(last >= Stage::BUFFER2) {
-      mesh.boundary_edges = internal::marked_boundary_edges(mesh, m_domain, m_loops);
-      internal::assign_regions(mesh, m_domain, m_loops);
-    }
+    if(last >= Stage::BUFFER2)
+      internal::mark_boundary_and_regions(mesh, m_domain, m_loops);
     return mesh;
   }
 

@@ -60,8 +60,8 @@ namespace IO {
 /// (4-node plane-stress elements numbered from 1, nodes counter-clockwise; the set `domain`
 /// holds them all); for a mesh of several regions, or of one with a regional attribute
 /// (`Quad_mesh_2::regions`), `*ELSET, ELSET=region_3` with the elements of the region of tag
-/// 3, for a `*SOLID SECTION` each; and per boundary marker of `mesh.boundary_edges`, by increasing marker,
-/// `*NSET, NSET=marker_3` (`marker_m3` for -3) with the nodes of its edges, and the element
+/// 3, for a `*SOLID SECTION` each; and per boundary marker of `mesh.boundary_edges`, by
+/// increasing marker, `*NSET, NSET=marker_3` (`marker_m3` for -3) with the nodes of its edges, and the element
 /// surface `*SURFACE, NAME=marker_3, TYPE=ELEMENT` of the element faces on its edges (face
 /// `Sk` of an element runs from its node k to its next node), made of the element sets
 /// `marker_3_S1` to `marker_3_S4` it names: what `*DSLOAD`, `*DLOAD` with `Pk`, `*FILM` or a

@@ -211,8 +211,8 @@ void write_msh_elements(std::ostream& out, const Quad_mesh_2<Point_2>& mesh, con
 /// with a regional attribute (`Quad_mesh_2::regions`): then region k is surface k + 1 with
 /// the physical group `region_3` of its tag 3, bounded by the curves of its boundary edges.
 ///
-/// With `mesh.boundary_edges`, each boundary marker gets a curve entity (tags 1, 2, ... by increasing marker) holding its
-/// edges as a block of 2-node lines (type 1, tags after the quads') and a named physical
+/// With `mesh.boundary_edges`, each boundary marker gets a curve entity (tags 1, 2, ... by
+/// increasing marker) holding its edges as a block of 2-node lines (type 1, tags after the quads') and a named physical
 /// group, `marker_3` for marker 3 (`marker_m3` for -3), and a single surface the physical
 /// group `domain` (tag 1); `$PhysicalNames` lists them. A marker's physical tag is the marker
 /// itself if every marker is positive, else 1, 2, ... by increasing marker (Gmsh's tags are

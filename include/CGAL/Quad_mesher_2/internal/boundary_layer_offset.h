@@ -421,8 +421,9 @@ private:
 };
 
 /// The domain bounded by the offsets: `domain` with each wall loop replaced by its offset
-/// (the same holes, regional attributes, isolated points and other loops). `offset_first[i]` is the index in the
-/// result's points of wall `i`'s first offset point; its points follow in offset order.
+/// (the same holes, regional attributes, isolated points and other loops). `offset_first[i]`
+/// is the index in the result's points of wall `i`'s first offset point; its points follow in
+/// offset order.
 template <class K>
 Domain_2<K> offset_domain(const Domain_2<K>& domain, const Domain_loops_2<K>& loops,
                           const std::vector<Wall_offset>& walls, std::vector<std::size_t>& offset_first)

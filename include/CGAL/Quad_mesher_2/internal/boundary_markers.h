@@ -29,12 +29,13 @@ namespace internal {
 
 /// the edges of `mesh`, the mesh of the domain whose loops are `loops`, that belong to one
 /// quad only, in the order of the quads, each with the marker of the input segment nearest
-/// its midpoint (`loop_edge_markers()`)
+/// its midpoint (`loop_edge_markers()`); `edge_loops` gets the loop of that segment, per edge
 template <class K>
 std::vector<typename Quad_mesh_2<typename K::Point_2>::Boundary_edge>
 marked_boundary_edges(const Quad_mesh_2<typename K::Point_2>& mesh, const Domain_2<K>& domain,
-                      const Domain_loops_2<K>& loops)
+                      const Domain_loops_2<K>& loops, std::vector<std::size_t>& edge_loops)
 {
+  edge_loops.clear();
   const std::vector<std::vector<int>> markers = loop_edge_markers(domain, loops);
   const std::unique_ptr<Loop_locator> locator = make_loop_locator(domain, loops);
   const Vertex_quads quads_at(mesh.quads, mesh.points.size());
@@ -50,6 +51,7 @@ marked_boundary_edges(const Quad_mesh_2<typename K::Point_2>& mesh, const Domain
       const Point_2d pa = to_point_2d(mesh.points[a]), pb = to_point_2d(mesh.points[b]);
       const Loop_locator::Hit h = locator->closest(CGAL::midpoint(pa, pb), length_2d(pb - pa));
       edges.push_back({ a, b, markers[h.loop][h.edge] });
+      edge_loops.push_back(h.loop);
     }
   return edges;
 }

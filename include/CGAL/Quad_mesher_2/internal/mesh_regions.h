@@ -5,7 +5,8 @@
 // The regions of a whole domain's mesh (`Quad_mesh_2::regions`): the faces of the domain,
 // those of one regional attribute merged, each with its output tag, and the region of every
 // quad. The faces' meshes share no vertex (loops are disjoint), so each connected piece of
-// the mesh lies in one face, which any of its boundary edges tells by the loop it lies on.
+// the mesh lies in one face, which any of its boundary edges tells by the loop it lies on
+// (found with its marker: mark_boundary_and_regions()).
 
 #ifndef CGAL_QUAD_MESHER_2_INTERNAL_MESH_REGIONS_H
 #define CGAL_QUAD_MESHER_2_INTERNAL_MESH_REGIONS_H
@@ -13,14 +14,12 @@
 #include <CGAL/Quad_mesher_2/Domain_2.h>
 #include <CGAL/Quad_mesher_2/Domain_loops_2.h>
 #include <CGAL/Quad_mesher_2/Quad_mesh_2.h>
-#include <CGAL/Quad_mesher_2/internal/approximate_kernel.h>
-#include <CGAL/Quad_mesher_2/internal/loop_locator.h>
+#include <CGAL/Quad_mesher_2/internal/boundary_markers.h>
 
 #include <cmath>
 #include <cstddef>
 #include <limits>
 #include <map>
-#include <memory>
 #include <numeric>
 #include <set>
 #include <vector>
@@ -63,9 +62,11 @@ std::vector<std::size_t> domain_regions(const Domain_2<K>& domain, const Domain_
   return output_region;
 }
 
-/// Fills `mesh.regions` and `mesh.quad_regions`; `mesh.boundary_edges` must be there.
+/// Fills `mesh.regions` and `mesh.quad_regions`, given the loop each of `mesh.boundary_edges`
+/// lies on (`edge_loops`)
 template <class K>
-void assign_regions(Quad_mesh_2<typename K::Point_2>& mesh, const Domain_2<K>& domain, const Domain_loops_2<K>& loops)
+void assign_regions(Quad_mesh_2<typename K::Point_2>& mesh, const Domain_2<K>& domain, const Domain_loops_2<K>& loops,
+                    const std::vector<std::size_t>& edge_loops)
 {
   const std::size_t none = std::size_t(-1);
   mesh.regions.clear();
@@ -79,18 +80,25 @@ void assign_regions(Quad_mesh_2<typename K::Point_2>& mesh, const Domain_2<K>& d
   };
   for(const auto& q : mesh.quads)
     for(int k = 1; k < 4; ++k) piece[find(q[k])] = find(q[0]);
-  const std::unique_ptr<Loop_locator> locator = make_loop_locator(domain, loops);
   std::vector<std::size_t> region_of_piece(mesh.points.size(), none);
-  for(const auto& e : mesh.boundary_edges) {
-    std::size_t& region = region_of_piece[find(e.v0)];
-    if(region != none) continue;
-    const Point_2d a = to_point_2d(mesh.points[e.v0]), b = to_point_2d(mesh.points[e.v1]);
-    const Loop_locator::Hit h = locator->closest(CGAL::midpoint(a, b), length_2d(b - a));
-    region = output_region[loops.loops[h.loop].region];
+  for(std::size_t e = 0; e < mesh.boundary_edges.size(); ++e) {
+    std::size_t& region = region_of_piece[find(mesh.boundary_edges[e].v0)];
+    if(region == none) region = output_region[loops.loops[edge_loops[e]].region];
   }
   mesh.quad_regions.resize(mesh.quads.size());
   for(std::size_t q = 0; q < mesh.quads.size(); ++q)
     mesh.quad_regions[q] = region_of_piece[find(mesh.quads[q][0])];
+}
+
+/// Fills what a mesh of a whole domain carries beyond its quads: `mesh.boundary_edges` with
+/// their markers (`marked_boundary_edges()`) and the regions.
+template <class K>
+void mark_boundary_and_regions(Quad_mesh_2<typename K::Point_2>& mesh, const Domain_2<K>& domain,
+                               const Domain_loops_2<K>& loops)
+{
+  std::vector<std::size_t> edge_loops;
+  mesh.boundary_edges = marked_boundary_edges(mesh, domain, loops, edge_loops);
+  assign_regions(mesh, domain, loops, edge_loops);
 }
 
 } // namespace internal

@@ -280,7 +280,7 @@ public:
           << ", beyond " << m_tree.depth_limit();
       throw Meshing_error(msg.str());
     }
-    check_region_area_budget(bound);
+    check_region_area_budget(bound, cap);
     const Domain_segments<GeomTraits> boundary(m_domain, m_loops, m_traits);
     auto bound_at = [&](const Point_2& p) {
       const std::size_t r = boundary.region_at(p);
@@ -302,14 +302,14 @@ public:
   }
 
   // The cells the maximum areas ask for at the least (each region's area over its cells',
-  // the minimum size capping them), counted before any is made: a budget error now, not
-  // after seconds and gigabytes.
-  void check_region_area_budget(const std::vector<double>& bound) const
+  // no deeper than `cap`, the minimum size's level), counted before any is made: a budget
+  // error now, not after seconds and gigabytes.
+  void check_region_area_budget(const std::vector<double>& bound, int cap) const
   {
     double cells = 0;
     for(std::size_t r = 0; r < bound.size(); ++r)
       if(bound[r] < HUGE_VAL) {
-        const double side = m_tree.cell_side((std::min)(level_for_size(m_tree, bound[r]), min_size_level(m_tree, m_criteria)));
+        const double side = m_tree.cell_side((std::min)(level_for_size(m_tree, bound[r]), cap));
         cells += CGAL::to_double(region_area(m_domain, m_loops, r, m_traits)) / (side * side);
       }
     if(cells <= double(m_criteria.max_cells()))
