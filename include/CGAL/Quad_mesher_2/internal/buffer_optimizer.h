@@ -193,10 +193,10 @@ private:
   // on the other side's edge.
   bool near_next_input_edge(std::size_t v) const
   {
-    const auto slide = m_zone.slides.find(v);
-    if(slide == m_zone.slides.end()) return false;
-    const std::vector<Point_2d>& loop = m_zone.locator->loop(slide->second.loop);
-    const std::size_t n = loop.size(), e = slide->second.edge;
+    const auto* slide = m_zone.slide(v);
+    if(slide == nullptr) return false;
+    const std::vector<Point_2d>& loop = m_zone.locator->loop(slide->loop);
+    const std::size_t n = loop.size(), e = slide->edge;
     auto at = [&](std::size_t k) { return loop[k % n]; };
     const auto distance2 = Approximate_kernel().compute_squared_distance_2_object();
     const Point_2d& p = m_zone.xy[v];
@@ -214,16 +214,16 @@ private:
   // outside's, sums to under 720 degrees: it winds once, and no angle need be summed.
   bool folded_at(std::size_t v, bool convex) const
   {
-    const auto slide = m_zone.slides.find(v);
-    if(slide == m_zone.slides.end() && m_zone.is_core_boundary(v)) return false;
+    const auto* slide = m_zone.slide(v);
+    if(slide == nullptr && m_zone.is_core_boundary(v)) return false;
     const std::vector<Wedge>& chain = corner_chain(v);
     if(chain.empty()) return true;
     const Point_2d& p = m_zone.xy[v];
-    if(slide != m_zone.slides.end()) {
-      const auto& n = slide->second.neighbors;
+    if(slide != nullptr) {
+      const auto& n = slide->neighbors;
       if(Approximate_kernel().angle_2_object()(m_zone.xy[n[0]], p, m_zone.xy[n[1]]) != OBTUSE) return true;
     }
-    if(convex && m_quads_at[v].size() <= (slide == m_zone.slides.end() ? 4u : 2u)) return false;
+    if(convex && m_quads_at[v].size() <= (slide == nullptr ? 4u : 2u)) return false;
     std::vector<std::pair<Point_2d, Point_2d>>& corners = m_wedge_points;
     corners.clear();
     for(const Wedge& w : chain) {
@@ -247,8 +247,8 @@ private:
       const int c = corner_of(Q, v);
       m_chain.emplace_back(Q[(c + 1) % 4], Q[(c + 3) % 4]);
     }
-    const auto slide = m_zone.slides.find(v);
-    if(slide != m_zone.slides.end() && !add_outside_wedge(slide->second.neighbors, m_chain)) m_chain.clear();
+    const auto* slide = m_zone.slide(v);
+    if(slide != nullptr && !add_outside_wedge(slide->neighbors, m_chain)) m_chain.clear();
     if(!closed_chain(m_chain)) m_chain.clear();
     return m_chain;
   }
@@ -373,11 +373,11 @@ private:
     add_vertex(v);
     for(std::size_t q : m_quads_at[v])
       for(std::size_t w : m_zone.mesh.quads[q]) add_vertex(w);
-    const auto slide = m_zone.slides.find(v);
-    if(slide == m_zone.slides.end()) return h;
-    h.add(std::uint64_t(slide->second.loop));
-    h.add(std::uint64_t(slide->second.edge));
-    for(std::size_t w : slide->second.neighbors) {
+    const auto* slide = m_zone.slide(v);
+    if(slide == nullptr) return h;
+    h.add(std::uint64_t(slide->loop));
+    h.add(std::uint64_t(slide->edge));
+    for(std::size_t w : slide->neighbors) {
       if(w == none) h.add(~std::uint64_t(0));
       else add_vertex(w);
     }
@@ -510,13 +510,13 @@ private:
   void write_back(const std::vector<std::size_t>& movable)
   {
     for(std::size_t v : movable) {
-      auto it = m_zone.slides.find(v);
-      if(it == m_zone.slides.end()) {
+      const auto* it = m_zone.slide(v);
+      if(it == nullptr) {
         m_zone.mesh.points[v] = m_zone.mesh_point(m_zone.xy[v]);
       } else {
-        const auto& lv = m_zone.loops.loops[it->second.loop].vertices;
-        const Point_2& a = m_zone.domain.points[lv[it->second.edge]];
-        const Point_2& b = m_zone.domain.points[lv[(it->second.edge + 1) % lv.size()]];
+        const auto& lv = m_zone.loops.loops[it->loop].vertices;
+        const Point_2& a = m_zone.domain.points[lv[it->edge]];
+        const Point_2& b = m_zone.domain.points[lv[(it->edge + 1) % lv.size()]];
         const Point_2d A = to_point_2d(a), B = to_point_2d(b);
         const Vector_2d ab = B - A;
         const double t = CGAL::scalar_product(m_zone.xy[v] - A, ab) / ab.squared_length();
@@ -532,9 +532,9 @@ private:
   // serves); false if there is no room
   bool slide_to(std::size_t v, Point_2d& p) const
   {
-    auto it = m_zone.slides.find(v);
-    if(it == m_zone.slides.end()) return true;
-    const std::size_t a = it->second.neighbors[0], b = it->second.neighbors[1];
+    const auto* it = m_zone.slide(v);
+    if(it == nullptr) return true;
+    const std::size_t a = it->neighbors[0], b = it->neighbors[1];
     if(a == none || b == none) return false;
     const Point_2d A = m_zone.xy[a], B = m_zone.xy[b];
     const Vector_2d ab = B - A;
@@ -545,9 +545,9 @@ private:
     // The neighbours must lie on this point's edge (or be its ends) for the chain to stay on
     // it: within 1e-9 of its length, or the rounding of its coordinates (points on a short
     // edge far from the origin are off its line by more than 1e-9 of it).
-    const std::vector<Point_2d>& loop = m_zone.locator->loop(it->second.loop);
-    const Point_2d& E0 = loop[it->second.edge];
-    const Point_2d& E1 = loop[(it->second.edge + 1) % loop.size()];
+    const std::vector<Point_2d>& loop = m_zone.locator->loop(it->loop);
+    const Point_2d& E0 = loop[it->edge];
+    const Point_2d& E1 = loop[(it->edge + 1) % loop.size()];
     const Vector_2d e = E1 - E0;
     const double el = length_2d(e);
     const double off_line = el * (1e-9 * el + 2 * coordinate_rounding_2d(E0, E1));

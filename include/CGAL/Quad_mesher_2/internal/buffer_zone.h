@@ -32,7 +32,6 @@
 #include <limits>
 #include <memory>
 #include <string>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -424,6 +423,10 @@ public:
     return 360.0 - right_side_angle(loop_xy[(k + nv - 1) % nv], loop_xy[k], loop_xy[(k + 1) % nv]);
   }
 
+  // the Slide of point v, or null if it does not slide on an input edge
+  const Slide* slide(std::size_t v) const { return v < slide_of.size() && slide_of[v].loop != none ? &slide_of[v] : nullptr; }
+  Slide* slide(std::size_t v) { return v < slide_of.size() && slide_of[v].loop != none ? &slide_of[v] : nullptr; }
+
   // a loop vertex the mesh must keep: it turns the boundary by the feature angle or more
   bool is_feature(std::size_t l, std::size_t k) const
   {
@@ -437,11 +440,11 @@ public:
   std::size_t input_vertex_point(std::size_t l, std::size_t k)
   {
     const std::size_t input = loops.loops[l].vertices[k];
-    auto it = input_vertex.find(input);
-    if(it != input_vertex.end()) return it->second;
+    if(input < input_vertex.size() && input_vertex[input] != none) return input_vertex[input];
     mesh.points.push_back(domain.points[input]);
     xy.push_back(to_point_2d(domain.points[input]));
     const std::size_t id = mesh.points.size() - 1;
+    input_vertex.resize((std::max)(input_vertex.size(), input + 1), none);
     input_vertex[input] = id;
     const auto& lv = loops.loops[l].vertices;
     const std::size_t nv = lv.size();
@@ -459,7 +462,8 @@ public:
     const Point_2& b = domain.points[lv[(edge + 1) % lv.size()]];
     mesh.points.push_back(point_between(a, b, t));
     xy.push_back(to_point_2d(mesh.points.back()));
-    slides[mesh.points.size() - 1] = Slide{ l, edge, { none, none } };
+    slide_of.resize(mesh.points.size(), Slide{ none, none, { none, none } });
+    slide_of.back() = Slide{ l, edge, { none, none } };
     return mesh.points.size() - 1;
   }
 
@@ -574,9 +578,9 @@ public:
   std::vector<std::vector<Point_2d>> first_points; // per cycle: its first buffer points (buffer1 on)
   std::vector<std::size_t> first_base; // per cycle: the mesh index of its first buffer point
   std::vector<std::size_t> first_core; // core vertex of each first buffer point
-  std::unordered_map<std::size_t, std::size_t> input_vertex;
+  std::vector<std::size_t> input_vertex; // per input point: its mesh point, or none
   std::vector<double> corner_angle; // per mesh point: its input corner's angle, or NaN
-  std::unordered_map<std::size_t, Slide> slides;
+  std::vector<Slide> slide_of; // per point: its Slide (loop none: it does not slide; see slide())
   std::vector<char> on_cycle_mark; // per core point
   std::vector<char> repaired_mark; // per point
   std::vector<char> fixed_mark;    // per core point: a domain's isolated point, which never moves

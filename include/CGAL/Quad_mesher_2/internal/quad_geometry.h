@@ -208,8 +208,6 @@ inline Vector_2d right_bisector(const Point_2d& a, const Point_2d& b, const Poin
   return normalized_2d(s.perpendicular(CLOCKWISE));
 }
 
-/// largest deviation of a quad's angles from 90 degrees; a large penalty if it is not strictly
-/// convex and counter-clockwise
 /// Whether every corner of q is strictly convex beyond quad_badness()'s flat threshold with
 /// |cos| squared below `max_cos2`, by products alone (no root, no arcsine): then
 /// quad_badness(q) is below asin(sqrt(max_cos2)), a test the buffer's inner loops make first.
@@ -227,6 +225,8 @@ inline bool quad_well_within(const std::array<Point_2d, 4>& q, double max_cos2)
   return true;
 }
 
+/// largest deviation of a quad's angles from 90 degrees; a large penalty if it is not strictly
+/// convex and counter-clockwise
 inline double quad_badness(const std::array<Point_2d, 4>& q)
 {
   // at a convex corner |angle - 90| = asin(|cos angle|), increasing in |cos|: one asin for

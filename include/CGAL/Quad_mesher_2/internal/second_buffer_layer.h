@@ -479,8 +479,9 @@ private:
   {
     std::unordered_map<std::size_t, std::size_t> loop_vertex_of_point;
     for(std::size_t k = 0; k < nv; ++k) {
-      auto it = m_zone.input_vertex.find(m_zone.loops.loops[l].vertices[k]);
-      if(it != m_zone.input_vertex.end()) loop_vertex_of_point[it->second] = k;
+      const std::size_t input = m_zone.loops.loops[l].vertices[k];
+      if(input < m_zone.input_vertex.size() && m_zone.input_vertex[input] != none)
+        loop_vertex_of_point[m_zone.input_vertex[input]] = k;
     }
     return loop_vertex_of_point;
   }
@@ -624,8 +625,8 @@ private:
     }
     const std::size_t M = gid.size();
     for(std::size_t k = 0; k < M; ++k)
-      if(m_zone.slides.count(gid[k]))
-        m_zone.slides[gid[k]].neighbors = { gid[(k + M - 1) % M], gid[(k + 1) % M] };
+      if(auto* slide = m_zone.slide(gid[k]))
+        slide->neighbors = { gid[(k + M - 1) % M], gid[(k + 1) % M] };
     for(const Quad& q : best.quads) {
       m_zone.add_quad(q);
       ++m_zone.report.second_layer_quads;

@@ -94,7 +94,7 @@ public:
   // mesh's points while the strip is paired)
   bool on_boundary_chain(std::size_t v) const
   {
-    return m_zone.is_input_vertex(v) || m_zone.slides.count(v) != 0 || v >= m_zone.mesh.points.size();
+    return m_zone.is_input_vertex(v) || m_zone.slide(v) != nullptr || v >= m_zone.mesh.points.size();
   }
 
 private:
