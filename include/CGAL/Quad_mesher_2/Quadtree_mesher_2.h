@@ -288,12 +288,17 @@ public:
   /// for splits no cell (finer cells are refused there): the next round would repeat it.
   /// A mesh of the whole domain (`last` is `Stage::BUFFER2`) comes with its `boundary_edges`
   /// and their markers, and its `regions`; with `Stage::SMOOTHING` it is smoothed first
-  /// (`smooth_mesh()`).
+  /// (`smooth_mesh()`), and where the smoothed mesh keeps a sliver, a quad more than
+  /// `max_sliver_ratio` times longer than wide that no input forces, the stages run again
+  /// (`sliver_round_budget` rounds) with the quadtree refined at each sliver; the new mesh is
+  /// kept if it has fewer slivers and no more quads with an unforced angle out.
   Mesh run(Stage last)
   {
     Mesh mesh = run_rounds(last);
-    if(last >= Stage::SMOOTHING)
+    if(last >= Stage::SMOOTHING) {
       smooth_mesh(mesh);
+      mesh = refine_slivers(std::move(mesh), last);
+    }
     if(last >= Stage::BUFFER2)
       internal::mark_boundary_and_regions(mesh, m_domain, m_loops);
     return mesh;
@@ -303,7 +308,7 @@ public:
   /// made there for runs past the clearance; empty after shorter runs
   const std::optional<Mesh_quality_2>& quality() const { return m_quality; }
   /// how many times `run()` built the quadtree (1 + refinement rounds for the buffer layers)
-  int rounds() const { return m_rounds.round(); }
+  int rounds() const { return m_earlier_rounds + m_rounds.round(); }
   /// why the refinement rounds of the last `run()` ended, if they left quads with an angle
   /// outside [45°, 135°] that no input corner forces (or gave up on an invalid round)
   enum class Rounds_end
@@ -339,6 +344,11 @@ public:
   /// what the buffer stages did in the last round
   const Buffer_report& buffer_report() const { return m_buffer_report; }
   static constexpr int max_refinement_rounds = 16;
+  /// the aspect ratio (longest over shortest edge) above which a quad of the smoothed mesh is
+  /// a sliver that `run()` refines (see there)
+  static constexpr double max_sliver_ratio = 10.0;
+  /// the rounds `run()` runs again for slivers: one, whose mesh must not add angles out
+  static constexpr int sliver_round_budget = 1;
   /// valid rounds refined for angles that did not lower their count, at most
   static constexpr int max_stalled_angle_rounds = 3;
 
@@ -386,14 +396,18 @@ public:
   const Mesh_criteria_2<GeomTraits>& criteria() const { return m_criteria; }
 
 private:
-  // run(last) but for the boundary edges
-  Mesh run_rounds(Stage last)
+  // run(last) but for the boundary edges; `again`: the rounds of refine_slivers(), which keep
+  // the requests and figures of the first
+  Mesh run_rounds(Stage last, bool again = false)
   {
-    m_refinement_queue.clear();
+    if(!again) {
+      m_refinement_queue.clear();
+      m_round_figures.clear();
+      m_earlier_rounds = 0;
+    }
     m_move_memo = internal::Move_memo();
-    m_round_figures.clear();
     m_quality.reset();
-    m_rounds = Rounds(max_refinement_rounds, max_stalled_angle_rounds);
+    m_rounds = Rounds(again ? sliver_round_budget : max_refinement_rounds, max_stalled_angle_rounds);
     // the best valid round's mesh and state, kept while later rounds try for better angles:
     // building it again would cost a whole round
     Round_state best;
@@ -514,6 +528,84 @@ private:
     Buffer_report buffer_report;
     std::optional<Mesh_quality_2> quality;
   };
+
+  // Not in the paper: a smoothed mesh may keep a sliver, a quad over `max_sliver_ratio` times
+  // longer than wide that no input forces (none of its corners is an input corner under 45
+  // degrees, and its shortest edge does not join two input vertices). The rounds run again
+  // with the quadtree refined at each, and the new mesh is kept if it has fewer.
+  Mesh refine_slivers(Mesh mesh, Stage last)
+  {
+    const std::vector<internal::Refinement_request> requests = sliver_requests(mesh);
+    if(requests.empty() || m_refinement_queue.add(*m_tree, requests) == 0)
+      return mesh;
+    const std::size_t smoothing_moves = m_smoothing_moves, vertex_splits = m_vertex_splits;
+    const Rounds rounds = m_rounds;
+    Round_state kept = save_round(std::move(mesh));
+    m_earlier_rounds = rounds.round();
+    try {
+      Mesh again = run_rounds(last, true);
+      smooth_mesh(again);
+      if(sliver_requests(again).size() < requests.size()
+         && m_buffer_report.bad_angle_quads <= kept.buffer_report.bad_angle_quads)
+        return again;
+    } catch(const Meshing_error&) {
+      // refined, the rounds found no valid mesh: the first one stands
+    }
+    // the first mesh and its state; the rounds, their figures and the timings count both
+    m_smoothing_moves = smoothing_moves;
+    m_vertex_splits = vertex_splits;
+    m_earlier_rounds = m_rounds.round();
+    m_rounds = rounds;
+    return restore_round(std::move(kept));
+  }
+
+  // a refinement request at each sliver (see refine_slivers()), of its longest edge's size
+  std::vector<internal::Refinement_request> sliver_requests(const Mesh& mesh) const
+  {
+    std::vector<double> corner_angle(mesh.points.size(), 360.0); // by mesh vertex; 360: no input vertex
+    std::vector<internal::Point_2d> input;
+    for(const auto& loop : m_loops.loops) {
+      const std::size_t n = loop.vertices.size();
+      for(std::size_t k = 0; k < n; ++k)
+        input.push_back(internal::to_point_2d(m_domain.points[loop.vertices[k]]));
+    }
+    std::vector<double> angle_of_input;
+    for(const auto& loop : m_loops.loops) {
+      const std::size_t n = loop.vertices.size();
+      for(std::size_t k = 0; k < n; ++k)
+        angle_of_input.push_back(360.0 - internal::right_side_angle(
+                                   internal::to_point_2d(m_domain.points[loop.vertices[(k + n - 1) % n]]),
+                                   internal::to_point_2d(m_domain.points[loop.vertices[k]]),
+                                   internal::to_point_2d(m_domain.points[loop.vertices[(k + 1) % n]])));
+    }
+    std::vector<std::size_t> order(input.size());
+    for(std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return input[a] < input[b]; });
+    for(std::size_t v = 0; v < mesh.points.size(); ++v) {
+      const internal::Point_2d p = internal::to_point_2d(mesh.points[v]);
+      auto it = std::lower_bound(order.begin(), order.end(), p, [&](std::size_t a, const internal::Point_2d& q) { return input[a] < q; });
+      if(it != order.end() && input[*it] == p) corner_angle[v] = angle_of_input[*it];
+    }
+    std::vector<internal::Refinement_request> requests;
+    for(const auto& q : mesh.quads) {
+      std::array<internal::Point_2d, 4> c;
+      for(int k = 0; k < 4; ++k) c[k] = internal::to_point_2d(mesh.points[q[k]]);
+      if(!(internal::quad_aspect_ratio(c) > max_sliver_ratio)) continue;
+      int shortest = 0;
+      double longest = 0;
+      for(int k = 0; k < 4; ++k) {
+        const double len = internal::length_2d(c[(k + 1) % 4] - c[k]);
+        longest = (std::max)(longest, len);
+        if(len < internal::length_2d(c[(shortest + 1) % 4] - c[shortest])) shortest = k;
+      }
+      bool forced = corner_angle[q[shortest]] < 360.0 && corner_angle[q[(shortest + 1) % 4]] < 360.0;
+      for(int k = 0; k < 4; ++k) forced = forced || corner_angle[q[k]] < 45.0;
+      if(!forced)
+        requests.emplace_back(internal::Point_2d((c[0].x() + c[1].x() + c[2].x() + c[3].x()) / 4,
+                                                 (c[0].y() + c[1].y() + c[2].y() + c[3].y()) / 4), longest);
+    }
+    return requests;
+  }
 
   // takes the current round's state (the next round builds its own)
   Round_state save_round(Mesh&& mesh)
@@ -815,7 +907,7 @@ private:
   // adds the round's figures and shows them to the observer
   void record_round(const Mesh& mesh, bool valid, std::size_t requests, std::chrono::steady_clock::time_point start)
   {
-    m_round_figures.push_back({ m_rounds.round(), mesh.quads.size(), m_buffer_report.invalid_quads,
+    m_round_figures.push_back({ rounds(), mesh.quads.size(), m_buffer_report.invalid_quads,
                                 m_buffer_report.bad_angle_quads, m_buffer_report.bad_angle_quads_by_layer, valid, requests,
                                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() });
     if(m_round_observer)
@@ -853,6 +945,7 @@ private:
   std::vector<std::size_t> m_point_names; // the input index of each anchored point
   typedef internal::Refinement_rounds<Rounds_end> Rounds;
   Rounds m_rounds{ max_refinement_rounds, max_stalled_angle_rounds };
+  int m_earlier_rounds = 0; // of a first run_rounds() that refine_slivers() ran again
   std::vector<internal::Point_2d> m_flawed; // the last whole-mesh check's flaws
   std::vector<Round_figures> m_round_figures;
   Round_observer m_round_observer;
