@@ -31,6 +31,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -562,49 +563,51 @@ private:
   // a refinement request at each sliver (see refine_slivers()), of its longest edge's size
   std::vector<internal::Refinement_request> sliver_requests(const Mesh& mesh) const
   {
-    std::vector<double> corner_angle(mesh.points.size(), 360.0); // by mesh vertex; 360: no input vertex
-    std::vector<internal::Point_2d> input;
-    for(const auto& loop : m_loops.loops) {
-      const std::size_t n = loop.vertices.size();
-      for(std::size_t k = 0; k < n; ++k)
-        input.push_back(internal::to_point_2d(m_domain.points[loop.vertices[k]]));
-    }
-    std::vector<double> angle_of_input;
-    for(const auto& loop : m_loops.loops) {
-      const std::size_t n = loop.vertices.size();
-      for(std::size_t k = 0; k < n; ++k)
-        angle_of_input.push_back(360.0 - internal::right_side_angle(
-                                   internal::to_point_2d(m_domain.points[loop.vertices[(k + n - 1) % n]]),
-                                   internal::to_point_2d(m_domain.points[loop.vertices[k]]),
-                                   internal::to_point_2d(m_domain.points[loop.vertices[(k + 1) % n]])));
-    }
-    std::vector<std::size_t> order(input.size());
-    for(std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return input[a] < input[b]; });
-    for(std::size_t v = 0; v < mesh.points.size(); ++v) {
-      const internal::Point_2d p = internal::to_point_2d(mesh.points[v]);
-      auto it = std::lower_bound(order.begin(), order.end(), p, [&](std::size_t a, const internal::Point_2d& q) { return input[a] < q; });
-      if(it != order.end() && input[*it] == p) corner_angle[v] = angle_of_input[*it];
-    }
+    std::vector<std::size_t> long_quads; // over the ratio: slivers unless the input forces them
+    for(std::size_t q = 0; q < mesh.quads.size(); ++q)
+      if(internal::quad_aspect_ratio(corners(mesh, q)) > max_sliver_ratio) long_quads.push_back(q);
+    if(long_quads.empty())
+      return {};
+    const std::vector<double> angle = input_corner_angles(mesh);
     std::vector<internal::Refinement_request> requests;
-    for(const auto& q : mesh.quads) {
-      std::array<internal::Point_2d, 4> c;
-      for(int k = 0; k < 4; ++k) c[k] = internal::to_point_2d(mesh.points[q[k]]);
-      if(!(internal::quad_aspect_ratio(c) > max_sliver_ratio)) continue;
-      int shortest = 0;
-      double longest = 0;
-      for(int k = 0; k < 4; ++k) {
-        const double len = internal::length_2d(c[(k + 1) % 4] - c[k]);
-        longest = (std::max)(longest, len);
-        if(len < internal::length_2d(c[(shortest + 1) % 4] - c[shortest])) shortest = k;
-      }
-      bool forced = corner_angle[q[shortest]] < 360.0 && corner_angle[q[(shortest + 1) % 4]] < 360.0;
-      for(int k = 0; k < 4; ++k) forced = forced || corner_angle[q[k]] < 45.0;
+    for(std::size_t q : long_quads) {
+      const auto& Q = mesh.quads[q];
+      const std::array<internal::Point_2d, 4> c = corners(mesh, q);
+      const std::array<double, 4> len = internal::quad_edge_lengths(c);
+      const int shortest = int(std::min_element(len.begin(), len.end()) - len.begin());
+      bool forced = !std::isnan(angle[Q[shortest]]) && !std::isnan(angle[Q[(shortest + 1) % 4]]);
+      for(std::size_t v : Q) forced = forced || angle[v] < 45.0;
       if(!forced)
         requests.emplace_back(internal::Point_2d((c[0].x() + c[1].x() + c[2].x() + c[3].x()) / 4,
-                                                 (c[0].y() + c[1].y() + c[2].y() + c[3].y()) / 4), longest);
+                                                 (c[0].y() + c[1].y() + c[2].y() + c[3].y()) / 4),
+                              *std::max_element(len.begin(), len.end()));
     }
     return requests;
+  }
+
+  static std::array<internal::Point_2d, 4> corners(const Mesh& mesh, std::size_t q)
+  {
+    std::array<internal::Point_2d, 4> c;
+    for(int k = 0; k < 4; ++k) c[k] = internal::to_point_2d(mesh.points[mesh.quads[q][k]]);
+    return c;
+  }
+
+  // per vertex of `mesh`: the domain's angle at the loop vertex it is, or NaN
+  std::vector<double> input_corner_angles(const Mesh& mesh) const
+  {
+    std::vector<std::pair<internal::Point_2d, double>> input;
+    for(const auto& loop : m_loops.loops)
+      for(std::size_t k = 0; k < loop.vertices.size(); ++k)
+        input.emplace_back(internal::to_point_2d(m_domain.points[loop.vertices[k]]),
+                           internal::loop_corner_angle(m_domain, loop, k));
+    std::sort(input.begin(), input.end());
+    std::vector<double> angle(mesh.points.size(), std::numeric_limits<double>::quiet_NaN());
+    for(std::size_t v = 0; v < mesh.points.size(); ++v) {
+      const internal::Point_2d p = internal::to_point_2d(mesh.points[v]);
+      auto it = std::lower_bound(input.begin(), input.end(), p, [](const auto& e, const internal::Point_2d& x) { return e.first < x; });
+      if(it != input.end() && it->first == p) angle[v] = it->second;
+    }
+    return angle;
   }
 
   // takes the current round's state (the next round builds its own)

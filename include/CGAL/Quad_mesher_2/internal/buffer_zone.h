@@ -48,6 +48,16 @@ struct Refinement_requests
   std::vector<std::pair<Point_2d, double>> for_angles;
 };
 
+/// the angle of the domain at vertex k of `loop` (the domain on its left), degrees
+template <class K>
+double loop_corner_angle(const Domain_2<K>& domain, const Boundary_loop_2<K>& loop, std::size_t k)
+{
+  const std::vector<std::size_t>& lv = loop.vertices;
+  const std::size_t nv = lv.size();
+  return 360.0 - right_side_angle(to_point_2d(domain.points[lv[(k + nv - 1) % nv]]), to_point_2d(domain.points[lv[k]]),
+                                  to_point_2d(domain.points[lv[(k + 1) % nv]]));
+}
+
 /// The buffer stages' shared state on one core mesh (see the file comment).
 template <class K>
 class Buffer_zone : public Buffer_tolerances
@@ -446,12 +456,8 @@ public:
     const std::size_t id = mesh.points.size() - 1;
     input_vertex.resize((std::max)(input_vertex.size(), input + 1), none);
     input_vertex[input] = id;
-    const auto& lv = loops.loops[l].vertices;
-    const std::size_t nv = lv.size();
     corner_angle.resize(id + 1, std::numeric_limits<double>::quiet_NaN());
-    corner_angle[id] = 360.0 - right_side_angle(to_point_2d(domain.points[lv[(k + nv - 1) % nv]]),
-                                                  to_point_2d(domain.points[input]),
-                                                  to_point_2d(domain.points[lv[(k + 1) % nv]]));
+    corner_angle[id] = loop_corner_angle(domain, loops.loops[l], k);
     return id;
   }
 
