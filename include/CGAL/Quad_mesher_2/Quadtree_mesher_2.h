@@ -398,15 +398,15 @@ public:
 
 private:
   // run(last) but for the boundary edges; `again`: the rounds of refine_slivers(), which keep
-  // the requests and figures of the first
+  // the requests and figures of the first, and recall its moves as any next round does
   Mesh run_rounds(Stage last, bool again = false)
   {
     if(!again) {
       m_refinement_queue.clear();
       m_round_figures.clear();
       m_earlier_rounds = 0;
+      m_move_memo = internal::Move_memo();
     }
-    m_move_memo = internal::Move_memo();
     m_quality.reset();
     m_rounds = Rounds(again ? sliver_round_budget : max_refinement_rounds, max_stalled_angle_rounds);
     // the best valid round's mesh and state, kept while later rounds try for better angles:
