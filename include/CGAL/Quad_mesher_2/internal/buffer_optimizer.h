@@ -100,28 +100,38 @@ private:
   struct Local
   {
     int invalid = 0, out = 0;
-    double worst = 0, excess = 0;
+    Deviation worst;
+    double excess = 0;
     bool by_excess = false;
     bool operator<(const Local& o) const
     {
       if(invalid != o.invalid) return invalid < o.invalid;
       if(out != o.out) return out < o.out;
-      if(worst < o.worst - angle_tolerance) return true;
-      if(worst > o.worst + angle_tolerance || !by_excess) return false;
+      if(worst.below(o.worst, angle_tolerance)) return true;
+      if(o.worst.below(worst, angle_tolerance) || !by_excess) return false;
       return excess < o.excess - angle_tolerance;
     }
     // counts quad q (its cost b) in
-    void add(double b, const Buffer_zone<K>& zone, const Quad& q)
+    void add(const Deviation& b, const Buffer_zone<K>& zone, const Quad& q)
     {
-      worst = (std::max)(worst, b);
-      if(b >= 1000.0) {
+      worst = Deviation::larger(worst, b);
+      if(b.is_penalty()) {
         ++invalid;
-      } else if(deviation_out_of_range(b)) {
+      } else if(out_of_range(b)) {
         ++out;
         excess += zone.quad_excess(q);
       }
     }
   };
+
+  // deviation_out_of_range() of a Deviation: cosines this far either side of sin(45 degrees),
+  // 0.70710678, are over 6e-7 degrees from 45 and decide alone
+  static bool out_of_range(const Deviation& d)
+  {
+    if(d.is_cos && d.value < 0.7071067) return false;
+    if(d.is_cos && d.value > 0.7071069) return true;
+    return deviation_out_of_range(d.in_degrees());
+  }
 
   static double square(double x) { return x * x; }
 
@@ -170,8 +180,8 @@ private:
     bool convex = true;
     for(std::size_t q : m_quads_at[v]) {
       const Quad& Q = m_zone.mesh.quads[q];
-      const double b = m_zone.quad_cost(Q);
-      convex = convex && b < 1000.0;
+      const Deviation b = m_zone.quad_deviation(Q);
+      convex = convex && !b.is_penalty();
       r.add(b, m_zone, Q);
       const int c = corner_of(Q, v);
       // an edge collapsing to a point keeps the angles fine but merges two vertices: the
@@ -321,7 +331,7 @@ private:
       return to != old;
     }
     const Local current = local_cost(v, nullptr);
-    if(current.worst <= 30.0) return false;
+    if(current.worst.in_degrees() <= 30.0) return false;
     std::vector<Point_2d>& targets = m_targets;
     targets.push_back(m_zone.parallelogram_targets(v, m_quads_at, targets));
     add_turns_about_corners(v, m_quads_at, targets);
@@ -390,7 +400,7 @@ private:
   {
     Local r;
     for(const Quad& q : m_zone.mesh.quads)
-      if(m_zone.made_or_changed(q)) r.add(m_zone.quad_cost(q), m_zone, q);
+      if(m_zone.made_or_changed(q)) r.add(m_zone.quad_deviation(q), m_zone, q);
     return r;
   }
 

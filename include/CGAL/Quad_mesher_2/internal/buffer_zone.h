@@ -484,24 +484,28 @@ public:
 
   // a quad's cost, its largest deviation from 90 degrees (quad_badness()), judged without the
   // angle an input corner forces
-  double quad_cost(const Quad& q) const
+  double quad_cost(const Quad& q) const { return quad_deviation(q).in_degrees(); }
+
+  // quad_cost() with its arcsine deferred (the optimiser's inner loop compares costs)
+  Deviation quad_deviation(const Quad& q) const
   {
     std::array<Point_2d, 4> P;
     for(int k = 0; k < 4; ++k) P[k] = xy[q[k]];
-    double b = quad_badness(P);
+    const double c = quad_worst_cos(P);
+    if(c >= 1000.0)
+      return Deviation::degrees(c);
     // an angle an input corner alpha forces is not the strip's fault: the quad is judged by its
     // other three against [45, 135], not the paper's looser [alpha, 180 - alpha]. They fit
     // there for any alpha (they sum to 360 - alpha: 120 each, say).
-    if(b < 1000.0)
-      for(int k = 0; k < 4; ++k)
-        if(input_corner_angle(q[k]) < 45.0 // cheap test first: the cost runs in inner loops
-           && forced_angle(q[k], corner_angle_degrees(P[(k + 3) % 4], P[k], P[(k + 1) % 4]))) {
-          b = 0;
-          for(int j = 0; j < 4; ++j)
-            if(j != k) b = (std::max)(b, std::abs(corner_angle_degrees(P[(j + 3) % 4], P[j], P[(j + 1) % 4]) - 90.0));
-          break;
-        }
-    return b;
+    for(int k = 0; k < 4; ++k)
+      if(input_corner_angle(q[k]) < 45.0 // cheap test first: the cost runs in inner loops
+         && forced_angle(q[k], corner_angle_degrees(P[(k + 3) % 4], P[k], P[(k + 1) % 4]))) {
+        double b = 0;
+        for(int j = 0; j < 4; ++j)
+          if(j != k) b = (std::max)(b, std::abs(corner_angle_degrees(P[(j + 3) % 4], P[j], P[(j + 1) % 4]) - 90.0));
+        return Deviation::degrees(b);
+      }
+    return Deviation::of_cos(c);
   }
 
   // the sum over a quad's corners outside [45, 135] of the square of their excess, but for

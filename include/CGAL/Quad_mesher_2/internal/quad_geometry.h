@@ -225,12 +225,10 @@ inline bool quad_well_within(const std::array<Point_2d, 4>& q, double max_cos2)
   return true;
 }
 
-/// largest deviation of a quad's angles from 90 degrees; a large penalty if it is not strictly
-/// convex and counter-clockwise
-inline double quad_badness(const std::array<Point_2d, 4>& q)
+/// the |cos| of a quad's corner farthest from 90 degrees (at most 1); a large penalty, 1000 or
+/// more, if it is not strictly convex and counter-clockwise (quad_badness() without its arcsine)
+inline double quad_worst_cos(const std::array<Point_2d, 4>& q)
 {
-  // at a convex corner |angle - 90| = asin(|cos angle|), increasing in |cos|: one asin for
-  // the worst corner instead of an atan2 per corner (the buffer's inner loops call this)
   // edge k runs from corner k to corner k + 1; each length is taken once
   std::array<Vector_2d, 4> e;
   std::array<double, 4> len;
@@ -248,7 +246,49 @@ inline double quad_badness(const std::array<Point_2d, 4>& q)
       return 1000.0 + (cr < 0 ? 100.0 : 0.0);
     worst_cos = (std::max)(worst_cos, std::abs(CGAL::scalar_product(out, in)) / (l1 * l2));
   }
-  return std::asin((std::min)(worst_cos, 1.0)) * (180.0 / 3.14159265358979323846);
+  return (std::min)(worst_cos, 1.0);
+}
+
+/// the deviation from 90 degrees of a corner whose |cos| is `c`: at a convex corner
+/// |angle - 90| = asin(|cos angle|), increasing in |cos|
+inline double deviation_of_cos(double c) { return std::asin(c) * (180.0 / 3.14159265358979323846); }
+
+/// A deviation from 90 degrees held as the |cos| it is the arcsine of (`deviation_of_cos()`),
+/// or as degrees (a penalty, or one found otherwise): the arcsine is taken only when a
+/// comparison needs it. It grows by over 57 degrees per unit of cosine, so two cosines more
+/// than a fiftieth of a tolerance apart decide a comparison within that tolerance alone.
+struct Deviation
+{
+  double value = 0;
+  bool is_cos = true;
+
+  static Deviation of_cos(double c) { return Deviation{ c, true }; }
+  static Deviation degrees(double d) { return Deviation{ d, false }; }
+  double in_degrees() const { return is_cos ? deviation_of_cos(value) : value; }
+  bool is_penalty() const { return !is_cos && value >= 1000.0; }
+
+  /// whether this is below `o` by more than `tolerance` degrees
+  bool below(const Deviation& o, double tolerance) const
+  {
+    if(is_cos && o.is_cos) {
+      if(value < o.value - tolerance / 50) return true;
+      if(value >= o.value) return false;
+    }
+    return in_degrees() < o.in_degrees() - tolerance;
+  }
+  static const Deviation& larger(const Deviation& a, const Deviation& b)
+  {
+    if(a.is_cos && b.is_cos) return a.value < b.value ? b : a;
+    return a.in_degrees() < b.in_degrees() ? b : a;
+  }
+};
+
+/// largest deviation of a quad's angles from 90 degrees; a large penalty if it is not strictly
+/// convex and counter-clockwise
+inline double quad_badness(const std::array<Point_2d, 4>& q)
+{
+  const double c = quad_worst_cos(q);
+  return c < 1000.0 ? deviation_of_cos(c) : c;
 }
 
 } // namespace internal
