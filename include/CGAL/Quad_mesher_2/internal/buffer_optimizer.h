@@ -108,7 +108,7 @@ private:
       if(invalid != o.invalid) return invalid < o.invalid;
       if(out != o.out) return out < o.out;
       if(worst.below(o.worst, angle_tolerance)) return true;
-      if(o.worst.below(worst, angle_tolerance) || !by_excess) return false;
+      if(worst.above(o.worst, angle_tolerance) || !by_excess) return false;
       return excess < o.excess - angle_tolerance;
     }
     // counts quad q (its cost b) in
@@ -125,7 +125,7 @@ private:
   };
 
   // deviation_out_of_range() of a Deviation: cosines this far either side of sin(45 degrees),
-  // 0.70710678, are over 6e-7 degrees from 45 and decide alone
+  // 0.70710678, are over 6e-6 degrees from 45, far beyond verifier_slack, and decide alone
   static bool out_of_range(const Deviation& d)
   {
     if(d.is_cos && d.value < 0.7071067) return false;

@@ -3,7 +3,8 @@
 // Author(s): Quad_mesher_2 developers
 //
 // The shape of one quadrilateral (corner angles, scaled Jacobians, edge lengths, its deviation
-// from a square's angles) and the plane constructions the buffer stages search with that the
+// from a square's angles, and how two deviations compare within a tolerance without an
+// arcsine) and the plane constructions the buffer stages search with that the
 // kernel lacks (projection parameters, bisectors, turns by an angle), on the approximate
 // kernel's points and vectors. Measures, computed in `double` by design (see STYLE.md,
 // "Exactness"): no topological decision is taken here.
@@ -276,7 +277,17 @@ struct Deviation
     }
     return in_degrees() < o.in_degrees() - tolerance;
   }
-  static const Deviation& larger(const Deviation& a, const Deviation& b)
+  /// whether this is above `o` by more than `tolerance` degrees (not `o.below(*this)`: the
+  /// degrees round otherwise, and near ties the two can differ)
+  bool above(const Deviation& o, double tolerance) const
+  {
+    if(is_cos && o.is_cos) {
+      if(value > o.value + tolerance / 50) return true;
+      if(value <= o.value) return false;
+    }
+    return in_degrees() > o.in_degrees() + tolerance;
+  }
+  static Deviation larger(const Deviation& a, const Deviation& b)
   {
     if(a.is_cos && b.is_cos) return a.value < b.value ? b : a;
     return a.in_degrees() < b.in_degrees() ? b : a;
