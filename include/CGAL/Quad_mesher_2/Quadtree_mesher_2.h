@@ -31,9 +31,9 @@
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -568,7 +568,9 @@ private:
       if(internal::quad_aspect_ratio(corners(mesh, q)) > max_sliver_ratio) long_quads.push_back(q);
     if(long_quads.empty())
       return {};
-    const std::vector<double> angle = input_corner_angles(mesh);
+    std::vector<internal::Point_2d> xy;
+    for(const Point_2& p : mesh.points) xy.push_back(internal::to_point_2d(p));
+    const std::vector<double> angle = input_corner_angles(xy);
     std::vector<internal::Refinement_request> requests;
     for(std::size_t q : long_quads) {
       const auto& Q = mesh.quads[q];
@@ -592,8 +594,8 @@ private:
     return c;
   }
 
-  // per vertex of `mesh`: the domain's angle at the loop vertex it is, or NaN
-  std::vector<double> input_corner_angles(const Mesh& mesh) const
+  // per point of `xy`: the domain's angle at the loop vertex there, or NaN
+  std::vector<double> input_corner_angles(const std::vector<internal::Point_2d>& xy) const
   {
     std::vector<std::pair<internal::Point_2d, double>> input;
     for(const auto& loop : m_loops.loops)
@@ -601,11 +603,10 @@ private:
         input.emplace_back(internal::to_point_2d(m_domain.points[loop.vertices[k]]),
                            internal::loop_corner_angle(m_domain, loop, k));
     std::sort(input.begin(), input.end());
-    std::vector<double> angle(mesh.points.size(), std::numeric_limits<double>::quiet_NaN());
-    for(std::size_t v = 0; v < mesh.points.size(); ++v) {
-      const internal::Point_2d p = internal::to_point_2d(mesh.points[v]);
-      auto it = std::lower_bound(input.begin(), input.end(), p, [](const auto& e, const internal::Point_2d& x) { return e.first < x; });
-      if(it != input.end() && it->first == p) angle[v] = it->second;
+    std::vector<double> angle(xy.size(), std::numeric_limits<double>::quiet_NaN());
+    for(std::size_t v = 0; v < xy.size(); ++v) {
+      auto it = std::lower_bound(input.begin(), input.end(), xy[v], [](const auto& e, const internal::Point_2d& x) { return e.first < x; });
+      if(it != input.end() && it->first == xy[v]) angle[v] = it->second;
     }
     return angle;
   }
@@ -888,15 +889,12 @@ private:
            && quality.number_of_near_duplicate_vertices == 0;
   }
 
-  // the vertices the smoothing keeps where they are: the input's points and isolated points
+  // the vertices the smoothing keeps where they are: the loops' vertices and isolated points
   std::vector<char> pinned_vertices(const std::vector<internal::Point_2d>& xy) const
   {
-    std::vector<internal::Point_2d> input;
-    input.reserve(m_points.size());
-    for(const Point_2& p : m_points) input.push_back(internal::to_point_2d(p));
-    std::sort(input.begin(), input.end());
+    const std::vector<double> angle = input_corner_angles(xy);
     std::vector<char> pinned(xy.size(), 0);
-    for(std::size_t v = 0; v < xy.size(); ++v) pinned[v] = std::binary_search(input.begin(), input.end(), xy[v]);
+    for(std::size_t v = 0; v < xy.size(); ++v) pinned[v] = !std::isnan(angle[v]);
     for(std::size_t v : m_point_vertices)
       if(v < pinned.size()) pinned[v] = 1;
     return pinned;

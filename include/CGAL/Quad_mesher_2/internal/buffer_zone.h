@@ -433,6 +433,9 @@ public:
     return 360.0 - right_side_angle(loop_xy[(k + nv - 1) % nv], loop_xy[k], loop_xy[(k + 1) % nv]);
   }
 
+  // the mesh point of input point `input`, or none if it has none yet
+  std::size_t point_of_input(std::size_t input) const { return input < input_vertex.size() ? input_vertex[input] : none; }
+
   // the Slide of point v, or null if it does not slide on an input edge
   const Slide* slide(std::size_t v) const { return v < slide_of.size() && slide_of[v].loop != none ? &slide_of[v] : nullptr; }
   Slide* slide(std::size_t v) { return v < slide_of.size() && slide_of[v].loop != none ? &slide_of[v] : nullptr; }
@@ -450,7 +453,8 @@ public:
   std::size_t input_vertex_point(std::size_t l, std::size_t k)
   {
     const std::size_t input = loops.loops[l].vertices[k];
-    if(input < input_vertex.size() && input_vertex[input] != none) return input_vertex[input];
+    const std::size_t known = point_of_input(input);
+    if(known != none) return known;
     mesh.points.push_back(domain.points[input]);
     xy.push_back(to_point_2d(domain.points[input]));
     const std::size_t id = mesh.points.size() - 1;

@@ -479,9 +479,8 @@ private:
   {
     std::unordered_map<std::size_t, std::size_t> loop_vertex_of_point;
     for(std::size_t k = 0; k < nv; ++k) {
-      const std::size_t input = m_zone.loops.loops[l].vertices[k];
-      if(input < m_zone.input_vertex.size() && m_zone.input_vertex[input] != none)
-        loop_vertex_of_point[m_zone.input_vertex[input]] = k;
+      const std::size_t point = m_zone.point_of_input(m_zone.loops.loops[l].vertices[k]);
+      if(point != none) loop_vertex_of_point[point] = k;
     }
     return loop_vertex_of_point;
   }
