@@ -316,6 +316,26 @@ TEST(Mesh_smoothing, a_sliver_it_leaves_is_refined_away)
   }
 }
 
+// A synthetic far field, a jagged polygon around an ellipse hole: one fan quad of the buffer
+// spanned a side 0.55 long, from a reflex corner to a convex one, with a node slid 3e-4 from
+// the convex corner (aspect ratio 1890). The sliver round asked for cells of half that side,
+// 0.27, where they were 0.25 already, and built the same mesh again; asking one level finer
+// than the cells at the sliver, it meshes the side with quads of aspect ratio 4.1 at most.
+TEST(Mesh_smoothing, a_sliver_longer_than_its_cells_is_refined_away)
+{
+  QM::Domain_2<K> d;
+  std::string error;
+  ASSERT_TRUE(QM::IO::read_poly(std::string(QM2_TEST_DATA_DIR) + "/sliver_jagged_far_field.poly", d, &error)) << error;
+  QM::Quadtree_mesher_2<K> mesher(d);
+  const Mesh m = mesher.run();
+  const QM::Mesh_quality_2 q = QM::compute_quality(m);
+  EXPECT_TRUE(q.is_valid());
+  EXPECT_LE(q.max_aspect_ratio, 10.0);
+  EXPECT_GE(q.min_angle, 45.0 - 1e-7);
+  EXPECT_LE(q.max_angle, 135.0 + 1e-7);
+  EXPECT_EQ(mesher.buffer_report().bad_angle_quads, 0u);
+}
+
 // Lake Superior (the paper's case, bundled): the bulk the stage is for, as assertions on its
 // figures (measured 97.3% of angles in [60, 120] and aspect ratios up to 11.0 with Epick: the
 // quad that spans the 15 degree input corner; every other is at most 7.7).

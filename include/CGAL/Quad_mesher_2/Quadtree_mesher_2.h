@@ -560,7 +560,8 @@ private:
     return restore_round(std::move(kept));
   }
 
-  // a refinement request at each sliver (see refine_slivers()), of its longest edge's size
+  // a refinement request at each sliver (see refine_slivers()), of its longest edge's size or
+  // the side of the leaf at its centre, whichever is smaller: one level finer there, at least
   std::vector<internal::Refinement_request> sliver_requests(const Mesh& mesh) const
   {
     std::vector<std::size_t> long_quads; // over the ratio: slivers unless the input forces them
@@ -579,10 +580,14 @@ private:
       const int shortest = int(std::min_element(len.begin(), len.end()) - len.begin());
       bool forced = !std::isnan(angle[Q[shortest]]) && !std::isnan(angle[Q[(shortest + 1) % 4]]);
       for(std::size_t v : Q) forced = forced || angle[v] < 45.0;
-      if(!forced)
-        requests.emplace_back(internal::Point_2d((c[0].x() + c[1].x() + c[2].x() + c[3].x()) / 4,
-                                                 (c[0].y() + c[1].y() + c[2].y() + c[3].y()) / 4),
-                              *std::max_element(len.begin(), len.end()));
+      if(forced) continue;
+      const internal::Point_2d centre((c[0].x() + c[1].x() + c[2].x() + c[3].x()) / 4,
+                                      (c[0].y() + c[1].y() + c[2].y() + c[3].y()) / 4);
+      // a sliver spanning a few cells may be no longer than two of them: its own size alone
+      // would ask for the cells it came from
+      const Point_2 at(centre.x(), centre.y());
+      const double cell = m_tree->contains(at) ? m_tree->cell_side(m_tree->locate(at).level) : HUGE_VAL;
+      requests.emplace_back(centre, (std::min)(cell, *std::max_element(len.begin(), len.end())));
     }
     return requests;
   }
