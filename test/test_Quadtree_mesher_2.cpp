@@ -7,6 +7,8 @@
 #include "qm2_mesh_checks.h"
 #include "qm2_test_kernel.h"
 
+#include <CGAL/Quad_mesher_2/IO/read_poly.h>
+#include <CGAL/Quad_mesher_2/Mesh_quality_2.h>
 #include <CGAL/Quad_mesher_2/Quadtree_mesher_2.h>
 
 #include <CGAL/Polygon_2_algorithms.h>
@@ -517,6 +519,57 @@ TEST(Quadtree_mesher_2, angle_rounds_go_on_while_the_count_falls)
   }
   EXPECT_EQ(rounds.best(), 1u);
   EXPECT_TRUE(rounds.has_valid_round());
+}
+
+// The refinement requests of one round ask for one level finer than the tree is there before
+// them, together: two at one point (a poor quad's core vertex, which a neighbouring poor quad or
+// its first buffer point asks for again) and one beside them in the same leaf split it once,
+// where each had gone one level past the last (levels 5 and 6 here, then 6 for both); the
+// next round's go one level further.
+TEST(Quadtree_mesher_2, one_round_of_requests_refines_one_level_together)
+{
+  using Tree = QM::Balanced_quadtree_2<K>;
+  using P2d = QM::internal::Point_2d;
+  // the unit square's root has side 2 at the origin: (0.3, 0.3) and (0.31, 0.32) share the
+  // level-3 leaf [0.25, 0.5]^2 and its level-4 child
+  auto tree = [] {
+    Tree t(K::Iso_rectangle_2(K::Point_2(0, 0), K::Point_2(1, 1)), 20);
+    t.refine_at(K::Point_2(0.3, 0.3), 3);
+    return t;
+  };
+  const P2d p(0.3, 0.3), q(0.31, 0.32);
+  QM::internal::Refinement_queue queue;
+  Tree first = tree();
+  EXPECT_EQ(queue.add(first, { { p, 0.0 }, { p, 0.0 }, { q, 0.0 } }), 3u);
+  EXPECT_TRUE(queue.refine(first));
+  EXPECT_EQ(first.locate(K::Point_2(0.3, 0.3)).level, 4);
+  EXPECT_EQ(first.locate(K::Point_2(0.31, 0.32)).level, 4);
+  Tree second = tree();
+  EXPECT_EQ(queue.add(second, { { p, 0.0 } }), 1u);
+  EXPECT_TRUE(queue.refine(second));
+  EXPECT_EQ(second.locate(K::Point_2(0.3, 0.3)).level, 5);
+  EXPECT_EQ(second.locate(K::Point_2(0.31, 0.32)).level, 5); // in a child of the leaf split
+}
+
+// The 30P30N turned 135 degrees and scaled by 1.37 (benchmark/transform_sweep.py airfoils): the
+// rounds refining its slat cusp, a thin wedge, made cells of 1.4e-8 of the diagonal there while
+// each request of a round went a level past the last (mesh vertices 9.2e-9 of the diagonal
+// apart); one level a round, 2 rounds instead of 5 and vertices 1.8e-7 of it apart.
+TEST(Quadtree_mesher_2, a_thin_wedge_tip_keeps_its_vertices_apart)
+{
+  Domain d;
+  std::string error;
+  const std::string file = std::string(QM2_TEST_DATA_DIR) + "/airfoil_30p30n_turned135_x1.37.poly";
+  ASSERT_TRUE(QM::IO::read_poly(file, d, &error)) << error;
+  Mesher mesher(d);
+  const QM::Quad_mesh_2<K::Point_2> m = mesher.run();
+  const QM::Mesh_quality_2 q = QM::compute_quality(m);
+  EXPECT_TRUE(q.is_valid());
+  EXPECT_GE(q.min_edge_over_diagonal, 1e-8);
+  EXPECT_LE(q.max_aspect_ratio, 10.0);
+  EXPECT_GE(q.min_angle, 45.0 - 1e-7);
+  EXPECT_LE(q.max_angle, 135.0 + 1e-7);
+  EXPECT_EQ(mesher.buffer_report().bad_angle_quads, 0u);
 }
 
 } // namespace qm2_test_mesher

@@ -799,7 +799,10 @@ TEST(Buffer_layers, a_turned_comb_has_no_pockets)
 // the rounds ended on the second round, 3 quads out (42.5 degrees). Such places are refined
 // now. Since the sliding points' wider reach that turn meets no such round; turned 113
 // degrees, rounds 3 and 4 were refined for the check alone, and since slits of the outside
-// are sized by their own width, turned 85 degrees and scaled by 7.3, round 2 is.
+// are sized by their own width, turned 85 degrees and scaled by 7.3, round 2 was. Since the
+// requests of one round refine one level together, none of 1800 positions meets such a round
+// (even turns by 1, 2, 5 and 10, odd turns to 179 degrees by 1.37, 3.1 and 7.3): every round
+// that does must ask for cells.
 TEST(Buffer_layers, where_the_whole_mesh_check_fails_is_refined)
 {
   const std::string name = "airfoil_30p30n/airfoil_30p30n.poly";
@@ -809,10 +812,11 @@ TEST(Buffer_layers, where_the_whole_mesh_check_fails_is_refined)
   Mesher mesher(d);
   const Mesh m = mesher.run(Stage::BUFFER2);
   expect_angles_45_135(check_whole_domain(d, m, "30P30N turned 85, x7.3"), "30P30N turned 85, x7.3");
-  bool refined_for_the_check = false;
-  for(const auto& r : mesher.round_figures())
-    refined_for_the_check = refined_for_the_check || (!r.valid && r.invalid_quads == 0 && r.refinement_requests > 0);
-  EXPECT_TRUE(refined_for_the_check);
+  for(const auto& r : mesher.round_figures()) {
+    if(!r.valid && r.invalid_quads == 0) {
+      EXPECT_GT(r.refinement_requests, 0u) << "round " << r.round;
+    }
+  }
 }
 
 // A reflex tip's fan of three: its outer F points came from the core and left the middle quad
@@ -920,13 +924,13 @@ TEST(Buffer_layers, a_flat_fan_far_from_the_origin_is_taken_out)
 // check (as the verifier) 1e-7 past it: it moved a core vertex to make an angle of
 // 135.00000037 degrees, and five refinement rounds left that quad out (exit 4). It now
 // counts a quad out as the check does (two rounds; three since slits of the outside are
-// sized by their own width).
+// sized by their own width, four since the requests of one round refine one level together).
 TEST(Buffer_layers, the_optimiser_counts_an_angle_out_as_the_final_check_does)
 {
   const Domain d = load_test_data("random_convex_11_50.poly");
   Mesher mesher(d);
   expect_random_case_meets_45_135(mesher, d, "random convex polygon far from the origin", 1e-7);
-  EXPECT_LE(mesher.rounds(), 3);
+  EXPECT_LE(mesher.rounds(), 4);
 }
 
 // A random 2-opt polygon with two holes, 1.7e5 from the origin (random_domains.py --seed 19,
@@ -946,11 +950,13 @@ TEST(Buffer_layers, a_wide_loop_vertex_is_not_the_middle_of_a_fan)
 // them or at none, by the cost of its whole loop; each corner now takes what pairs the quads
 // about it better. A convex 76-gon with three holes (random_domains.py --seed 11, domain 23)
 // had two such corners on one strip, one taking four; since slits of the outside are sized
-// by their own width its core no longer has them. A convex 12-gon with five holes, 4.4e6
-// from the origin (random_domains.py --seed 1, domain 59), has five, one taking four.
+// by their own width its core no longer has them. A convex 12-gon with five holes (seed 1,
+// domain 59) had five, one taking four, until the requests of one round refined one level
+// together. A convex 17-gon with four holes, 9.5e6 from the origin (random_domains.py
+// --seed 1, domain 62), has two, one taking four.
 TEST(Buffer_layers, the_corners_of_one_strip_take_four_fan_points_one_by_one)
 {
-  const Domain d = load_test_data("random_convex_1_59.poly");
+  const Domain d = load_test_data("random_convex_1_62.poly");
   ASSERT_FALSE(d.points.empty());
   Mesher mesher(d);
   const Mesh m = mesher.run(Stage::BUFFER2);
@@ -1845,9 +1851,9 @@ TEST(Buffer_layers, the_returned_round_is_the_mesher_state)
 // round after it. The rounds end there, with the error the 16th would give (a 128-gon hole
 // 1e-7 from the side of a unit square repeated its seventh round nine times, 27 s each: 350 s,
 // now 119 s). Here a square hole 0.01 above the bottom of a unit square, narrow regions left
-// unresolved and at most depth 7: no core is left between them, and the fourth round (1652
-// quads; 1484 before axis-parallel domains lost the root grid's margin) was repeated twelve
-// times.
+// unresolved and at most depth 7: no core is left between them, and the fourth round (824
+// quads; 1652 while the requests of one round compounded, 1484 before axis-parallel domains
+// lost the root grid's margin) was repeated twelve times.
 TEST(Buffer_layers, the_rounds_end_when_their_refinement_splits_no_cell)
 {
   const Domain d = polygons({ rectangle(0, 0, 1, 1), { Point(0.3, 0.01), Point(0.3, 0.5), Point(0.7, 0.5), Point(0.7, 0.01) } },
@@ -1866,7 +1872,7 @@ TEST(Buffer_layers, the_rounds_end_when_their_refinement_splits_no_cell)
     << error;
   EXPECT_EQ(mesher.rounds(), 4);
   ASSERT_EQ(mesher.round_figures().size(), 4u);
-  EXPECT_EQ(mesher.round_figures().back().quads, 1652u);
+  EXPECT_EQ(mesher.round_figures().back().quads, 824u);
   EXPECT_FALSE(mesher.round_figures().back().valid);
 }
 
@@ -2232,7 +2238,7 @@ TEST(Buffer_layers, a_small_piece_of_core_cut_off_in_a_channel_is_dropped)
   const Domain d = load_test_data("random_twoopt_12_37.poly");
   Mesher mesher(d);
   expect_random_case_meets_45_135(mesher, d, "random 2-opt with a needle along a channel");
-  EXPECT_LE(mesher.rounds(), 3);
+  EXPECT_LE(mesher.rounds(), 4);
 }
 
 // ---- 3. determinism -------------------------------------------------------------------------

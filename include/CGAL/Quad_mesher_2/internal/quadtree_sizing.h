@@ -60,58 +60,49 @@ int min_size_level(const Quadtree& tree, const Criteria& criteria)
 typedef std::pair<Point_2d, double> Refinement_request;
 
 // The requests of every round so far. Each round builds its quadtree anew and refines it at
-// all of them: one level finer than it is there, at least, and cells of half the local size.
+// all of them, a round's requests after those of the rounds before: one level finer than it
+// is there, at least, and cells of half the local size. "There" is the tree before the
+// requests of that round: two poor quads sharing a core vertex, or two requests in one leaf,
+// ask for one level more together, not one level each.
 class Refinement_queue
 {
 public:
   void clear()
   {
     m_requests.clear();
+    m_round_begin.clear();
     m_applied = 0;
   }
 
-  // Queues each request, but not those that ask for cells below the quadtree's depth;
-  // returns how many it queued.
+  // Queues the requests of one round, but not those that ask for cells below the quadtree's
+  // depth; returns how many it queued.
   template <class Quadtree>
   std::size_t add(const Quadtree& tree, const std::vector<Refinement_request>& requests)
   {
-    std::size_t added = 0;
+    const std::size_t begin = m_requests.size();
     for(const auto& r : requests) {
       const double size = r.second > 0 ? r.second / 2 : 0;
       if(size > 0 && level_for_size(tree, size) > tree.max_depth()) continue;
       m_requests.push_back(r);
-      ++added;
     }
-    return added;
+    if(m_requests.size() > begin) m_round_begin.push_back(begin);
+    return m_requests.size() - begin;
   }
 
-  // Refines `tree` at every request; true if those queued since the last call split a cell.
-  // Every leaf touching the point is refined, not only the one `locate` picks: most requests
-  // are at core vertices, lattice points with four cells around them, and the poor buffer
-  // quads may lie in any of them.
+  // Refines `tree` at every request, round by round; true if those queued since the last call
+  // split a cell. Every leaf touching the point is refined, not only the one `locate` picks:
+  // most requests are at core vertices, lattice points with four cells around them, and the
+  // poor buffer quads may lie in any of them.
   template <class Quadtree>
   bool refine(Quadtree& tree)
   {
-    typedef typename Quadtree::Point_2 Point_2;
-    auto make_point = tree.geom_traits().construct_point_2_object();
-    const double delta = tree.cell_side(tree.max_depth()) / 2;
     std::size_t leaves_before_new = 0;
-    for(std::size_t i = 0; i < m_requests.size(); ++i) {
-      if(i == m_applied)
+    for(std::size_t k = 0; k < m_round_begin.size(); ++k) {
+      const std::size_t begin = m_round_begin[k];
+      const std::size_t end = k + 1 < m_round_begin.size() ? m_round_begin[k + 1] : m_requests.size();
+      if(begin == m_applied)
         leaves_before_new = tree.number_of_leaves();
-      const auto& r = m_requests[i];
-      std::array<Point_2, 4> around;
-      std::size_t n = 0;
-      for(int c = 0; c < 4; ++c) {
-        const Point_2 q = make_point(r.first.x() + ((c & 1) ? delta : -delta),
-                                     r.first.y() + ((c & 2) ? delta : -delta));
-        if(tree.contains(q)) around[n++] = q;
-      }
-      // at least one level finer than it is there now
-      int level = r.second > 0 ? level_for_size(tree, r.second / 2) : 0;
-      for(std::size_t k = 0; k < n; ++k) level = (std::max)(level, tree.locate(around[k]).level + 1);
-      if(level > tree.max_depth()) continue;
-      for(std::size_t k = 0; k < n; ++k) tree.refine_at(around[k], level);
+      refine_round(tree, begin, end);
     }
     const bool refined = m_applied < m_requests.size() && tree.number_of_leaves() > leaves_before_new;
     m_applied = m_requests.size();
@@ -119,7 +110,39 @@ public:
   }
 
 private:
+  // the requests begin .. end - 1 of one round: every level is read before any cell is split
+  template <class Quadtree>
+  void refine_round(Quadtree& tree, std::size_t begin, std::size_t end) const
+  {
+    std::vector<int> level(end - begin);
+    for(std::size_t i = begin; i < end; ++i) {
+      const double size = m_requests[i].second;
+      int& l = level[i - begin];
+      l = size > 0 ? level_for_size(tree, size / 2) : 0;
+      for(const auto& q : points_around(tree, m_requests[i].first)) l = (std::max)(l, tree.locate(q).level + 1);
+    }
+    for(std::size_t i = begin; i < end; ++i) {
+      if(level[i - begin] > tree.max_depth()) continue;
+      for(const auto& q : points_around(tree, m_requests[i].first)) tree.refine_at(q, level[i - begin]);
+    }
+  }
+
+  // the points of the tree half a finest cell diagonally off p, one in each leaf touching p
+  template <class Quadtree>
+  static std::vector<typename Quadtree::Point_2> points_around(const Quadtree& tree, const Point_2d& p)
+  {
+    auto make_point = tree.geom_traits().construct_point_2_object();
+    const double delta = tree.cell_side(tree.max_depth()) / 2;
+    std::vector<typename Quadtree::Point_2> around;
+    for(int c = 0; c < 4; ++c) {
+      const auto q = make_point(p.x() + ((c & 1) ? delta : -delta), p.y() + ((c & 2) ? delta : -delta));
+      if(tree.contains(q)) around.push_back(q);
+    }
+    return around;
+  }
+
   std::vector<Refinement_request> m_requests;
+  std::vector<std::size_t> m_round_begin; // the first of m_requests that each round queued
   std::size_t m_applied = 0; // of m_requests, by the last refine()
 };
 
