@@ -68,22 +68,29 @@ struct Smoothing_quad_shape
     return convex && aspect2 <= max_aspect2 && *std::max_element(cos2.begin(), cos2.end()) <= bound_cos2;
   }
 
-  /// an angle outside [60, 120] or an aspect ratio over 3: the quads the smoothing is for
-  bool needs_smoothing() const { return aspect2 > 9.0 || *std::max_element(cos2.begin(), cos2.end()) > 0.25; }
+  /// an angle outside [60, 120] or an aspect ratio over 3: the quads the smoothing is for. An
+  /// angle within 1e-9 of 1/4 in cos^2 (6e-8 degrees, within the verifier's slack) is in: a
+  /// vertex at its Fermat point (fermat_point_2d()) has angles of 120 to rounding, on either side.
+  bool needs_smoothing() const { return aspect2 > 9.0 || *std::max_element(cos2.begin(), cos2.end()) > range_cos2; }
+  static constexpr double range_cos2 = 0.25 + 1e-9;
 
   /// the smoothing's energy of the quad: over its corners, cos^2 plus three times its excess
   /// over 1/4 (angles outside [60, 120] weigh most), plus 1/2 for an angle outside [60, 120]
   /// (reached within 1e-3 of cos^2 past 1/4, 0.07 degrees, so that differences see it); plus
   /// log(r^2 / 9) for an aspect ratio r over 3, and 20 log(r^2 / 25) more over 5. The step
   /// counts what the stage is measured by: the angles at a vertex of three quads add up to
-  /// 360 degrees, and one of them at 121 is then better than all three at 120.3. An aspect
-  /// ratio over 5 outweighs any angle within the bound: the quad at a sharp input corner,
-  /// long and thin with its other angles near 90 or 120, widens towards 135 at its far end.
+  /// 360 degrees, and one of them at 121 is then better than all three at 120.3 (all three
+  /// at 120 is best: the Fermat point). An aspect ratio over 5 outweighs any angle within the
+  /// bound: the quad at a sharp input corner, long and thin with its other angles near 90 or
+  /// 120, widens towards 135 at its far end. The excess and the step start at `range_cos2`,
+  /// so that an angle of 120 to rounding costs the same on either side.
   double energy() const
   {
     double e = 0;
-    for(double c2 : cos2)
-      e += c2 + 3.0 * (std::max)(0.0, c2 - 0.25) + 0.5 * (std::min)(1.0, (std::max)(0.0, (c2 - 0.25) / 1e-3));
+    for(double c2 : cos2) {
+      const double excess = (std::max)(0.0, c2 - range_cos2);
+      e += c2 + 3.0 * excess + 0.5 * (std::min)(1.0, excess / 1e-3);
+    }
     if(aspect2 > max_aspect2)
       e += 20.0 * std::log(aspect2 / max_aspect2);
     return aspect2 > 9.0 ? e + std::log(aspect2 / 9.0) : e;
@@ -281,6 +288,21 @@ private:
     return t;
   }
 
+  // The corners of three quads at an interior vertex add up to 360 degrees, so one is 120 or
+  // more wherever it lies; all three are 120 only at the Fermat point of its edge neighbours:
+  // false if v has not three quads or is not free, or that point does not exist.
+  bool fermat_target(std::size_t v, Point_2d& p) const
+  {
+    if(m_freedom[v] != FREE || m_quads_at[v].size() != 3) return false;
+    std::array<Point_2d, 3> around;
+    std::size_t k = 0;
+    for(std::size_t q : m_quads_at[v]) {
+      const Quad& Q = m_quads[q];
+      around[k++] = m_xy[Q[(corner_of(Q, v) + 1) % 4]];
+    }
+    return fermat_point_2d(around[0], around[1], around[2], p);
+  }
+
   // the point of the line through v's boundary neighbours nearest to p, kept a tenth of the
   // way from each
   Point_2d on_boundary_line(std::size_t v, const Point_2d& p) const
@@ -316,6 +338,10 @@ private:
     Star& after = m_after;
     star(v, before);
     if(!before.wanted) return false;
+    // the Fermat point competes with the first place the targets give: the lower energy wins
+    Point_2d fermat(0, 0);
+    const bool fermat_better = fermat_target(v, fermat) && fermat != start && better_at(v, fermat, before, m_fermat);
+    m_xy[v] = start;
     bool moved = false;
     const Targets t = targets(v);
     for(int k = 0; k < t.count; ++k) {
@@ -329,6 +355,11 @@ private:
         }
       }
       if(moved) break;
+    }
+    if(fermat_better && (!moved || m_fermat.energy < after.energy)) {
+      m_xy[v] = fermat;
+      std::swap(after, m_fermat);
+      moved = true;
     }
     if(moved) std::swap(before, after);
     if(before.wanted && m_descended[v] == 0) {
@@ -387,7 +418,7 @@ private:
     return gradient;
   }
 
-  Star m_before, m_after, m_probe; // try_moves()'s, kept for their buffers
+  Star m_before, m_after, m_fermat, m_probe; // try_moves()'s, kept for their buffers
   std::vector<Point_2d>& m_xy;
   const std::vector<Quad>& m_quads;
   Vertex_quads m_quads_at;

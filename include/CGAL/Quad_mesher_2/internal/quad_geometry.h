@@ -178,6 +178,27 @@ inline Point_2d along_2d(const Point_2d& a, const Point_2d& b, double t)
   return a + t * (b - a);
 }
 
+/// The point from which each side of triangle abc is seen under 120 degrees (its Fermat
+/// point), if every angle of the triangle is under 120 degrees; else false. It is where the
+/// lines from a and from b to the apexes of the equilateral triangles raised on the opposite
+/// sides, outwards, meet.
+inline bool fermat_point_2d(const Point_2d& a, const Point_2d& b, const Point_2d& c, Point_2d& f)
+{
+  const double area2 = CGAL::determinant(b - a, c - a);
+  if(area2 == 0) return false;
+  auto under_120 = [](const Vector_2d& u, const Vector_2d& v) {
+    return CGAL::scalar_product(u, v) > -0.5 * length_2d(u) * length_2d(v);
+  };
+  if(!under_120(b - a, c - a) || !under_120(c - b, a - b) || !under_120(a - c, b - c)) return false;
+  const double outwards = (area2 > 0 ? -1 : 1) * 3.14159265358979323846 / 3; // right of b -> c in a ccw abc
+  const Point_2d apex_a = turned_about_2d(c, b, outwards), apex_b = turned_about_2d(a, c, outwards);
+  const Vector_2d da = apex_a - a, db = apex_b - b;
+  const double denominator = CGAL::determinant(da, db);
+  if(denominator == 0) return false;
+  f = a + (CGAL::determinant(b - a, db) / denominator) * da;
+  return true;
+}
+
 /// the distance from p to segment (a, b)
 inline double point_segment_distance(const Point_2d& p, const Point_2d& a, const Point_2d& b)
 {
