@@ -62,7 +62,7 @@ inline Point_2d turned_about_2d(const Point_2d& p, const Point_2d& centre, doubl
 /// with cross(u, v) = `cross` and dot(u, v) = `dot`.
 inline double angle_degrees(double cross, double dot)
 {
-  double a = std::atan2(cross, dot) * (180.0 / 3.14159265358979323846);
+  double a = std::atan2(cross, dot) * (180.0 / CGAL_PI);
   if(a < 0)
     a += 360.0;
   if(a >= 360.0)
@@ -190,7 +190,7 @@ inline bool fermat_point_2d(const Point_2d& a, const Point_2d& b, const Point_2d
     return CGAL::scalar_product(u, v) > -0.5 * length_2d(u) * length_2d(v);
   };
   if(!under_120(b - a, c - a) || !under_120(c - b, a - b) || !under_120(a - c, b - c)) return false;
-  const double outwards = (area2 > 0 ? -1 : 1) * 3.14159265358979323846 / 3; // right of b -> c in a ccw abc
+  const double outwards = (area2 > 0 ? -1 : 1) * CGAL_PI / 3; // right of b -> c in a ccw abc
   const Point_2d apex_a = turned_about_2d(c, b, outwards), apex_b = turned_about_2d(a, c, outwards);
   const Vector_2d da = apex_a - a, db = apex_b - b;
   const double denominator = CGAL::determinant(da, db);
@@ -216,7 +216,7 @@ inline Vector_2d normalized_2d(const Vector_2d& v)
 inline double right_side_angle(const Point_2d& a, const Point_2d& b, const Point_2d& c)
 {
   const Vector_2d t1 = b - a, t2 = c - b;
-  const double turn = std::atan2(CGAL::determinant(t1, t2), CGAL::scalar_product(t1, t2)) * 180.0 / 3.14159265358979323846;
+  const double turn = std::atan2(CGAL::determinant(t1, t2), CGAL::scalar_product(t1, t2)) * 180.0 / CGAL_PI;
   return 180.0 + turn;
 }
 
@@ -273,7 +273,7 @@ inline double quad_worst_cos(const std::array<Point_2d, 4>& q)
 
 /// the deviation from 90 degrees of a corner whose |cos| is `c`: at a convex corner
 /// |angle - 90| = asin(|cos angle|), increasing in |cos|
-inline double deviation_of_cos(double c) { return std::asin(c) * (180.0 / 3.14159265358979323846); }
+inline double deviation_of_cos(double c) { return std::asin(c) * (180.0 / CGAL_PI); }
 
 /// A deviation from 90 degrees held as the |cos| it is the arcsine of (`deviation_of_cos()`),
 /// or as degrees (a penalty, or one found otherwise): the arcsine is taken only when a

@@ -114,29 +114,41 @@ private:
   template <class Quadtree>
   void refine_round(Quadtree& tree, std::size_t begin, std::size_t end) const
   {
-    std::vector<int> level(end - begin);
+    std::vector<Points_around<typename Quadtree::Point_2>> around;
+    std::vector<int> level;
+    around.reserve(end - begin);
+    level.reserve(end - begin);
     for(std::size_t i = begin; i < end; ++i) {
+      around.push_back(points_around(tree, m_requests[i].first));
       const double size = m_requests[i].second;
-      int& l = level[i - begin];
-      l = size > 0 ? level_for_size(tree, size / 2) : 0;
-      for(const auto& q : points_around(tree, m_requests[i].first)) l = (std::max)(l, tree.locate(q).level + 1);
+      int l = size > 0 ? level_for_size(tree, size / 2) : 0;
+      for(std::size_t k = 0; k < around.back().n; ++k) l = (std::max)(l, tree.locate(around.back().p[k]).level + 1);
+      level.push_back(l);
     }
-    for(std::size_t i = begin; i < end; ++i) {
-      if(level[i - begin] > tree.max_depth()) continue;
-      for(const auto& q : points_around(tree, m_requests[i].first)) tree.refine_at(q, level[i - begin]);
+    for(std::size_t r = 0; r < around.size(); ++r) {
+      if(level[r] > tree.max_depth()) continue;
+      for(std::size_t k = 0; k < around[r].n; ++k) tree.refine_at(around[r].p[k], level[r]);
     }
   }
 
-  // the points of the tree half a finest cell diagonally off p, one in each leaf touching p
+  // the points of the tree half a finest cell diagonally off a request's point, one in each
+  // leaf touching it (`n` of them)
+  template <class Point_2>
+  struct Points_around
+  {
+    std::array<Point_2, 4> p;
+    std::size_t n = 0;
+  };
+
   template <class Quadtree>
-  static std::vector<typename Quadtree::Point_2> points_around(const Quadtree& tree, const Point_2d& p)
+  static Points_around<typename Quadtree::Point_2> points_around(const Quadtree& tree, const Point_2d& p)
   {
     auto make_point = tree.geom_traits().construct_point_2_object();
     const double delta = tree.cell_side(tree.max_depth()) / 2;
-    std::vector<typename Quadtree::Point_2> around;
+    Points_around<typename Quadtree::Point_2> around;
     for(int c = 0; c < 4; ++c) {
       const auto q = make_point(p.x() + ((c & 1) ? delta : -delta), p.y() + ((c & 2) ? delta : -delta));
-      if(tree.contains(q)) around.push_back(q);
+      if(tree.contains(q)) around.p[around.n++] = q;
     }
     return around;
   }
