@@ -85,7 +85,7 @@ TEST(Mesh_smoothing, takes_a_displaced_grid_vertex_back)
 double angle_at(const P2d& c, const P2d& a, const P2d& b)
 {
   const QM::internal::Vector_2d u = a - c, v = b - c;
-  return std::atan2(std::abs(CGAL::determinant(u, v)), CGAL::scalar_product(u, v)) * 180.0 / 3.14159265358979323846;
+  return std::atan2(std::abs(CGAL::determinant(u, v)), CGAL::scalar_product(u, v)) * 180.0 / CGAL_PI;
 }
 
 // Each side of a triangle whose angles are all under 120 degrees is seen from its Fermat

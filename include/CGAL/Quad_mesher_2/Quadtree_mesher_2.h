@@ -21,6 +21,7 @@
 #include <CGAL/Quad_mesher_2/internal/lattice_region.h>
 #include <CGAL/Quad_mesher_2/internal/mesh_regions.h>
 #include <CGAL/Quad_mesher_2/internal/mesh_smoothing.h>
+#include <CGAL/Quad_mesher_2/internal/quad_geometry.h>
 #include <CGAL/Quad_mesher_2/internal/quadtree_sizing.h>
 #include <CGAL/Quad_mesher_2/internal/refinement_rounds.h>
 #include <CGAL/Quad_mesher_2/internal/vertex_splits.h>
@@ -581,8 +582,7 @@ private:
       bool forced = !std::isnan(angle[Q[shortest]]) && !std::isnan(angle[Q[(shortest + 1) % 4]]);
       for(std::size_t v : Q) forced = forced || angle[v] < 45.0;
       if(forced) continue;
-      const internal::Point_2d centre((c[0].x() + c[1].x() + c[2].x() + c[3].x()) / 4,
-                                      (c[0].y() + c[1].y() + c[2].y() + c[3].y()) / 4);
+      const internal::Point_2d centre = internal::mean_2d(c.begin(), c.end());
       // a sliver spanning a few cells may be no longer than two of them: its own size alone
       // would ask for the cells it came from
       const Point_2 at(centre.x(), centre.y());
