@@ -364,6 +364,27 @@ TEST(Mesh_smoothing, a_sliver_it_leaves_is_refined_away)
   }
 }
 
+// A random star whose buffer had a poor quad at a hole's reflex corner, its core vertices all on
+// one side: refining at them alone brought the poor quad back a level nearer the corner for
+// four rounds, a pocket of cells one level deeper than the rest (1169 quads). Refined under
+// the poor quad too, two rounds and 1125 quads.
+TEST(Mesh_smoothing, a_poor_quad_at_a_corner_is_refined_under_itself)
+{
+  QM::Domain_2<K> d;
+  std::string error;
+  ASSERT_TRUE(QM::IO::read_poly(std::string(QM2_TEST_DATA_DIR) + "/star_corner_pocket_104.poly", d, &error)) << error;
+  QM::Quadtree_mesher_2<K> mesher(d);
+  const Mesh m = mesher.run();
+  const QM::Mesh_quality_2 q = QM::compute_quality(m);
+  EXPECT_TRUE(q.is_valid());
+  EXPECT_GE(q.min_angle, 45.0 - 1e-7);
+  EXPECT_LE(q.max_angle, 135.0 + 1e-7);
+  EXPECT_EQ(mesher.buffer_report().bad_angle_quads, 0u);
+  EXPECT_LE(mesher.rounds(), 2);
+  EXPECT_LE(mesher.quadtree().depth(), 7);
+  EXPECT_LT(m.quads.size(), 1150u);
+}
+
 // A synthetic far field, a jagged polygon around an ellipse hole: one fan quad of the buffer
 // spanned a side 0.55 long, from a reflex corner to a convex one, with a node slid 3e-4 from
 // the convex corner (aspect ratio 1890). The sliver round asked for cells of half that side,

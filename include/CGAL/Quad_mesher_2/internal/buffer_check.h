@@ -12,6 +12,7 @@
 
 #include <CGAL/Quad_mesher_2/internal/buffer_zone.h>
 #include <CGAL/Quad_mesher_2/internal/mesh_adjacency.h>
+#include <CGAL/Quad_mesher_2/internal/quad_geometry.h>
 
 #include <algorithm>
 #include <array>
@@ -82,6 +83,10 @@ public:
         // not for an invalid quad: a broken buffer's quads can span tens of cells each, and
         // their corners' cells suffice (their whole areas would ask for far more cells)
         if(valid_quad) request_over_area(P, size, requests);
+        // and under the quad itself: at an input corner a poor quad's core vertices may all lie
+        // on one side of it, and refining at them alone brought the same poor quad back a level
+        // nearer the corner, round after round
+        if(valid_quad && std::isfinite(size)) requests.emplace_back(mean_2d(P.begin(), P.end()), size);
       }
     }
   }
