@@ -252,12 +252,33 @@ TEST(Mesh_smoothing, keeps_the_bound_on_random_domains)
   EXPECT_GT(splits, 0u); // the property covers meshes the splits changed
 }
 
+// test/data/<file>, or an empty domain and a failed test
+QM::Domain_2<K> smoothing_test_data(const std::string& file)
+{
+  QM::Domain_2<K> d;
+  std::string error;
+  EXPECT_TRUE(QM::IO::read_poly(std::string(QM2_TEST_DATA_DIR) + "/" + file, d, &error)) << file << ": " << error;
+  return d;
+}
+
+// The quality of a whole run's mesh, checked for what every whole run must give: valid, every
+// angle in [45, 135] (these inputs have no corner under 45 degrees), no quad out left.
+QM::Mesh_quality_2 expect_whole_run_within_45_135(const Mesh& m, const QM::Quadtree_mesher_2<K>& mesher,
+                                                  const std::string& file)
+{
+  const QM::Mesh_quality_2 q = QM::compute_quality(m);
+  EXPECT_TRUE(q.is_valid()) << file;
+  EXPECT_GE(q.min_angle, 45.0 - 1e-7) << file;
+  EXPECT_LE(q.max_angle, 135.0 + 1e-7) << file;
+  EXPECT_EQ(mesher.buffer_report().bad_angle_quads, 0u) << file;
+  return q;
+}
+
 TEST(Mesh_smoothing, keeps_the_bound_on_bundled_random_polygons)
 {
   for(const char* file : { "random_convex_11_23.poly", "random_star_5_31.poly", "random_twoopt_4_67.poly" }) {
-    QM::Domain_2<K> d;
-    std::string error;
-    ASSERT_TRUE(QM::IO::read_poly(std::string(QM2_TEST_DATA_DIR) + "/" + file, d, &error)) << file << ": " << error;
+    const QM::Domain_2<K> d = smoothing_test_data(file);
+    ASSERT_FALSE(d.points.empty()) << file;
     std::size_t splits = 0;
     check_domain(d, file, splits);
   }
@@ -344,17 +365,11 @@ TEST(Mesh_smoothing, leaves_no_sliver_at_close_corners_or_in_a_thin_rectangle)
 TEST(Mesh_smoothing, a_sliver_it_leaves_is_refined_away)
 {
   for(const char* file : { "star_sliver_59.poly", "star_sliver_92.poly" }) {
-    QM::Domain_2<K> d;
-    std::string error;
-    ASSERT_TRUE(QM::IO::read_poly(std::string(QM2_TEST_DATA_DIR) + "/" + file, d, &error)) << file << ": " << error;
+    const QM::Domain_2<K> d = smoothing_test_data(file);
+    ASSERT_FALSE(d.points.empty()) << file;
     QM::Quadtree_mesher_2<K> mesher(d);
     const Mesh m = mesher.run();
-    const QM::Mesh_quality_2 q = QM::compute_quality(m);
-    EXPECT_TRUE(q.is_valid()) << file;
-    EXPECT_LE(q.max_aspect_ratio, 10.0) << file;
-    EXPECT_GE(q.min_angle, 45.0 - 1e-7) << file;
-    EXPECT_LE(q.max_angle, 135.0 + 1e-7) << file;
-    EXPECT_EQ(mesher.buffer_report().bad_angle_quads, 0u) << file;
+    EXPECT_LE(expect_whole_run_within_45_135(m, mesher, file).max_aspect_ratio, 10.0) << file;
     // Star 92's kept mesh is the sliver round's, which recalls the moves of the rounds before
     // (2246 moves recalled, 445 searched). Star 59's smoothing leaves no sliver since the
     // vertices of three quads take their Fermat points (4.9, 14.3 before): no round to recall.
@@ -370,16 +385,11 @@ TEST(Mesh_smoothing, a_sliver_it_leaves_is_refined_away)
 // the poor quad too, two rounds and 1125 quads.
 TEST(Mesh_smoothing, a_poor_quad_at_a_corner_is_refined_under_itself)
 {
-  QM::Domain_2<K> d;
-  std::string error;
-  ASSERT_TRUE(QM::IO::read_poly(std::string(QM2_TEST_DATA_DIR) + "/star_corner_pocket_104.poly", d, &error)) << error;
+  const QM::Domain_2<K> d = smoothing_test_data("star_corner_pocket_104.poly");
+  ASSERT_FALSE(d.points.empty());
   QM::Quadtree_mesher_2<K> mesher(d);
   const Mesh m = mesher.run();
-  const QM::Mesh_quality_2 q = QM::compute_quality(m);
-  EXPECT_TRUE(q.is_valid());
-  EXPECT_GE(q.min_angle, 45.0 - 1e-7);
-  EXPECT_LE(q.max_angle, 135.0 + 1e-7);
-  EXPECT_EQ(mesher.buffer_report().bad_angle_quads, 0u);
+  expect_whole_run_within_45_135(m, mesher, "star_corner_pocket_104.poly");
   EXPECT_LE(mesher.rounds(), 2);
   EXPECT_LE(mesher.quadtree().depth(), 7);
   EXPECT_LT(m.quads.size(), 1150u);
@@ -392,17 +402,12 @@ TEST(Mesh_smoothing, a_poor_quad_at_a_corner_is_refined_under_itself)
 // than the cells at the sliver, it meshes the side with quads of aspect ratio 4.1 at most.
 TEST(Mesh_smoothing, a_sliver_longer_than_its_cells_is_refined_away)
 {
-  QM::Domain_2<K> d;
-  std::string error;
-  ASSERT_TRUE(QM::IO::read_poly(std::string(QM2_TEST_DATA_DIR) + "/sliver_jagged_far_field.poly", d, &error)) << error;
+  const QM::Domain_2<K> d = smoothing_test_data("sliver_jagged_far_field.poly");
+  ASSERT_FALSE(d.points.empty());
   QM::Quadtree_mesher_2<K> mesher(d);
   const Mesh m = mesher.run();
-  const QM::Mesh_quality_2 q = QM::compute_quality(m);
-  EXPECT_TRUE(q.is_valid());
+  const QM::Mesh_quality_2 q = expect_whole_run_within_45_135(m, mesher, "sliver_jagged_far_field.poly");
   EXPECT_LE(q.max_aspect_ratio, 10.0);
-  EXPECT_GE(q.min_angle, 45.0 - 1e-7);
-  EXPECT_LE(q.max_angle, 135.0 + 1e-7);
-  EXPECT_EQ(mesher.buffer_report().bad_angle_quads, 0u);
 }
 
 // Lake Superior (the paper's case, bundled): the bulk the stage is for, as assertions on its
