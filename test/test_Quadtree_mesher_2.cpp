@@ -551,6 +551,44 @@ TEST(Quadtree_mesher_2, one_round_of_requests_refines_one_level_together)
   EXPECT_EQ(second.locate(K::Point_2(0.31, 0.32)).level, 5); // in a child of the leaf split
 }
 
+TEST(Quadtree_mesher_2, loop_turning_sums_the_turns_near_a_point)
+{
+  using P2d = QM::internal::Point_2d;
+  const QM::internal::Loop_turning square({ P2d(0, 0), P2d(1, 0), P2d(1, 1), P2d(0, 1) });
+  EXPECT_DOUBLE_EQ(square.arc(0), 0.0);
+  EXPECT_DOUBLE_EQ(square.arc(3), 3.0);
+  EXPECT_DOUBLE_EQ(square.within(0.5, 0.2), 0.0); // mid first side
+  EXPECT_DOUBLE_EQ(square.within(1.0, 0.1), 90.0); // at vertex 1
+  EXPECT_DOUBLE_EQ(square.within(1.5, 0.6), 180.0); // vertices 1 and 2
+  EXPECT_DOUBLE_EQ(square.within(0.05, 0.1), 90.0); // vertex 0, across the loop's start
+  EXPECT_DOUBLE_EQ(square.within(3.95, 0.1), 90.0); // and from its end
+  EXPECT_DOUBLE_EQ(square.within(2.0, 2.0), 360.0); // the whole loop
+  // a turn either way counts: the notch's reflex vertex as much as a convex one
+  const QM::internal::Loop_turning notch({ P2d(0, 0), P2d(2, 0), P2d(2, 2), P2d(1, 1), P2d(0, 2) });
+  EXPECT_NEAR(notch.within(4.0 + std::sqrt(2.0), 0.1), 90.0, 1e-9);
+}
+
+// The quadtree's band along the boundary (refine_boundary_band()): two cells along a
+// straight side, three within three cells of a corner or of a curve turning by over 40°.
+TEST(Quadtree_mesher_2, boundary_band_is_wider_where_the_boundary_turns)
+{
+  using P2d = QM::internal::Point_2d;
+  using Sizing = QM::internal::Quadtree_sizing<K>;
+  EXPECT_LT(Sizing::straight_band, Sizing::turning_band);
+  const QM::internal::Loop_turning rectangle({ P2d(0, 0), P2d(4, 0), P2d(4, 1), P2d(0, 1) });
+  const double h = 1.0 / 16;
+  EXPECT_EQ(Sizing::band_cells(rectangle, 2.0, h), Sizing::straight_band); // mid bottom side
+  EXPECT_EQ(Sizing::band_cells(rectangle, 4.0 - 2 * h, h), Sizing::turning_band); // 2 cells from a corner
+  EXPECT_EQ(Sizing::band_cells(rectangle, 4.0 - 4 * h, h), Sizing::straight_band); // 4 cells from it
+  EXPECT_EQ(Sizing::band_cells(rectangle, 0.5 * h, h), Sizing::turning_band); // past the loop's start
+  // a 64-gon (5.625° a vertex, sides of 0.098): gentle within 3 cells of 1/16, not of 1/4
+  std::vector<P2d> circle;
+  for(int k = 0; k < 64; ++k) circle.emplace_back(std::cos(k * CGAL_PI / 32), std::sin(k * CGAL_PI / 32));
+  const QM::internal::Loop_turning turning(circle);
+  EXPECT_EQ(Sizing::band_cells(turning, 1.0, 1.0 / 16), Sizing::straight_band);
+  EXPECT_EQ(Sizing::band_cells(turning, 1.0, 1.0 / 4), Sizing::turning_band);
+}
+
 // The 30P30N turned 135 degrees and scaled by 1.37 (benchmark/transform_sweep.py airfoils): the
 // rounds refining its slat cusp, a thin wedge, made cells of 1.4e-8 of the diagonal there while
 // each request of a round went a level past the last (mesh vertices 9.2e-9 of the diagonal

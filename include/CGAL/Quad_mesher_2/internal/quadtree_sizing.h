@@ -56,6 +56,48 @@ int min_size_level(const Quadtree& tree, const Criteria& criteria)
   return (std::min)((std::max)(l, 0), tree.max_depth());
 }
 
+// How much a closed polyline turns near a point of it: the arc length at each vertex and
+// the running sum of the absolute turns (degrees) at the vertices, for sums over a stretch.
+class Loop_turning
+{
+public:
+  explicit Loop_turning(const std::vector<Point_2d>& loop) : m_arc(loop.size() + 1, 0.0), m_turn(loop.size() + 1, 0.0)
+  {
+    const std::size_t n = loop.size();
+    for(std::size_t k = 0; k < n; ++k) {
+      const Vector_2d in = loop[(k + 1) % n] - loop[k], out = loop[(k + 2) % n] - loop[(k + 1) % n];
+      const double turn = angle_degrees(CGAL::determinant(in, out), CGAL::scalar_product(in, out));
+      m_arc[k + 1] = m_arc[k] + length_2d(in);
+      m_turn[k + 1] = m_turn[k] + (std::min)(turn, 360.0 - turn); // at vertex k + 1
+    }
+  }
+
+  /// the arc length from vertex 0 to vertex k
+  double arc(std::size_t k) const { return m_arc[k]; }
+
+  /// the turns at the vertices within arc length r of the point at arc length s
+  double within(double s, double r) const
+  {
+    const double length = m_arc.back();
+    if(2 * r >= length) return m_turn.back();
+    double lo = s - r, hi = s + r, sum = 0;
+    if(lo < 0) { sum += between(lo + length, length); lo = 0; }
+    if(hi > length) { sum += between(0, hi - length); hi = length; }
+    return sum + between(lo, hi);
+  }
+
+private:
+  // the turns at the vertices k >= 1 with arc(k) in [lo, hi] (vertex n is vertex 0)
+  double between(double lo, double hi) const
+  {
+    const std::size_t first = std::size_t(std::lower_bound(m_arc.begin() + 1, m_arc.end(), lo) - m_arc.begin());
+    const std::size_t end = std::size_t(std::upper_bound(m_arc.begin() + 1, m_arc.end(), hi) - m_arc.begin());
+    return end > first ? m_turn[end - 1] - m_turn[first - 1] : 0.0;
+  }
+
+  std::vector<double> m_arc, m_turn;
+};
+
 // A point where a round of the buffer stages asked for finer cells, and the local size there.
 typedef std::pair<Point_2d, double> Refinement_request;
 
@@ -375,40 +417,54 @@ public:
     }
   }
 
-  // Cells within `boundary_band` cells of the boundary are made as small as the leaf at the
-  // nearest boundary point, so the clearance leaves a core boundary of one cell size: the
-  // uniform grid of §4.4 (boundary angles 90°, 180° and 270° only) and a buffer zone of even
-  // width. The levels are read before any band is refined, so fine cells do not spread along
-  // the whole boundary, one band after another.
+  // Cells near the boundary are made as small as the leaf at the nearest boundary point, so
+  // the clearance leaves a core boundary of one cell size: the uniform grid of §4.4 (boundary
+  // angles 90°, 180° and 270° only) and a buffer zone of even width. The levels are read
+  // before any band is refined, so fine cells do not spread along the whole boundary, one
+  // band after another.
   void refine_boundary_band()
   {
     auto make_point = m_traits.construct_point_2_object();
-    std::vector<std::pair<Point_2d, int>> targets;
+    struct Band { Point_2d centre; int level, cells; };
+    std::vector<Band> bands;
     for(const auto& loop : m_loops.loops) {
-      const std::size_t n = loop.vertices.size();
-      for(std::size_t k = 0; k < n; ++k) {
-        const Point_2d a = to_point_2d(m_domain.points[loop.vertices[k]]);
-        const Vector_2d d = to_point_2d(m_domain.points[loop.vertices[(k + 1) % n]]) - a;
+      std::vector<Point_2d> xy;
+      for(std::size_t v : loop.vertices) xy.push_back(to_point_2d(m_domain.points[v]));
+      const Loop_turning turning(xy);
+      for(std::size_t k = 0; k < xy.size(); ++k) {
+        const Vector_2d d = xy[(k + 1) % xy.size()] - xy[k];
         const double length = length_2d(d);
         for(double t = 0; t < 1;) {
-          const Point_2d q = a + t * d;
+          const Point_2d q = xy[k] + t * d;
           const int level = m_tree.locate(make_point(q.x(), q.y())).level;
-          targets.push_back({ q, level });
-          t += m_tree.cell_side(level) / (2 * length);
+          const double h = m_tree.cell_side(level);
+          bands.push_back({ q, level, band_cells(turning, turning.arc(k) + t * length, h) });
+          t += h / (2 * length);
         }
       }
     }
-    for(const auto& target : targets) {
-      const double h = m_tree.cell_side(target.second);
-      for(int i = -boundary_band; i <= boundary_band; ++i)
-        for(int j = -boundary_band; j <= boundary_band; ++j) {
-          const Point_2 p = make_point(target.first.x() + i * h, target.first.y() + j * h);
-          if(m_tree.contains(p) && !m_tree.is_node(m_tree.cell_containing(p, target.second)))
-            m_tree.refine_at(p, target.second);
+    for(const Band& band : bands) {
+      const double h = m_tree.cell_side(band.level);
+      for(int i = -band.cells; i <= band.cells; ++i)
+        for(int j = -band.cells; j <= band.cells; ++j) {
+          const Point_2 p = make_point(band.centre.x() + i * h, band.centre.y() + j * h);
+          if(m_tree.contains(p) && !m_tree.is_node(m_tree.cell_containing(p, band.level)))
+            m_tree.refine_at(p, band.level);
         }
     }
   }
-  static constexpr int boundary_band = 3;
+
+  // How many cells of side h the band reaches from the boundary point at arc length s of a
+  // loop: along a straight stretch `straight_band` suffice (balance grades the rest; each
+  // band cell more costs a row of quads along the whole boundary); where the loop turns by
+  // more than `band_turn_limit` degrees within `turning_band` cells, the wedge beside the
+  // turn needs its cells that far too.
+  static int band_cells(const Loop_turning& turning, double s, double h)
+  {
+    return turning.within(s, turning_band * h) > band_turn_limit ? turning_band : straight_band;
+  }
+  static constexpr int straight_band = 2, turning_band = 3;
+  static constexpr double band_turn_limit = 40;
 
 private:
   void compute_point_spacing()
