@@ -65,10 +65,9 @@ public:
   {
     const std::size_t n = loop.size();
     for(std::size_t k = 0; k < n; ++k) {
-      const Vector_2d in = loop[(k + 1) % n] - loop[k], out = loop[(k + 2) % n] - loop[(k + 1) % n];
-      const double turn = angle_degrees(CGAL::determinant(in, out), CGAL::scalar_product(in, out));
-      m_arc[k + 1] = m_arc[k] + length_2d(in);
-      m_turn[k + 1] = m_turn[k] + (std::min)(turn, 360.0 - turn); // at vertex k + 1
+      const Point_2d &a = loop[k], &b = loop[(k + 1) % n], &c = loop[(k + 2) % n];
+      m_arc[k + 1] = m_arc[k] + length_2d(b - a);
+      m_turn[k + 1] = m_turn[k] + std::abs(180.0 - corner_angle_degrees(a, b, c)); // at vertex k + 1
     }
   }
 
