@@ -118,6 +118,33 @@ TEST(Quadtree_mesher_2, max_size_bounds_the_cells_meeting_the_domain_only)
   EXPECT_GT(mesh.quads.size(), 3000u);
 }
 
+// A domain's loop vertices ask for cells of twice their spacing s_i, one level coarser than
+// a point cloud's points, which Lemma 1 needs alone in their cells.
+TEST(Quadtree_mesher_2, loop_vertices_get_cells_one_level_coarser_than_their_spacing)
+{
+  Domain domain, cloud;
+  for(int i = 0; i < 64; ++i) {
+    const double t = 2 * CGAL_PI * i / 64;
+    domain.points.emplace_back(std::cos(t), std::sin(t));
+    domain.segments.push_back({ std::size_t(i), std::size_t((i + 1) % 64) });
+  }
+  cloud.points = domain.points;
+  const double spacing = 2 * std::sin(CGAL_PI / 64);
+  Mesher on_loops(domain), on_points(cloud);
+  on_loops.run(QM::Stage::QUADTREE);
+  on_points.run(QM::Stage::QUADTREE);
+  for(const K::Point_2& p : domain.points) {
+    const auto& tree = on_loops.quadtree();
+    EXPECT_EQ(tree.locate(p).level, QM::internal::level_for_size(tree, 2 * spacing));
+    EXPECT_LT(tree.locate(p).level, QM::internal::level_for_size(tree, spacing));
+    EXPECT_GE(on_points.quadtree().locate(p).level, QM::internal::level_for_size(on_points.quadtree(), spacing));
+  }
+  const QM::Mesh_quality_2 q = QM::compute_quality(on_loops.run());
+  EXPECT_TRUE(q.is_valid());
+  EXPECT_GE(q.min_angle, 45.0 - 1e-7);
+  EXPECT_LE(q.max_angle, 135.0 + 1e-7);
+}
+
 TEST(Quadtree_mesher_2, min_size_caps_refinement_instead_of_failing)
 {
   Domain d;

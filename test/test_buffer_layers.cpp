@@ -320,12 +320,14 @@ Figures check_whole_domain(const Domain& d, const Mesh& m, const std::string& na
   EXPECT_EQ(ccw, outer) << "counter-clockwise mesh boundary loops vs the domain's outer loops";
   EXPECT_EQ(cw, loops.loops.size() - outer) << "clockwise mesh boundary loops vs the domain's holes";
 
-  // area: within 1e-3 relative of the domain's (chords may cut off vertices turning < 20°)
+  // area: within 2e-3 relative of the domain's (chords may cut off vertices turning < 20°,
+  // within the chord tolerance; the two discs' 64-gons lose up to 1.5e-3 of their area with
+  // cells of 2 s_i at loop vertices, under 1e-3 with cells of s_i)
   const double domain_area = to_d(QM::domain_area(d, loops));
   double area = 0;
   for(std::size_t q = 0; q < m.quads.size(); ++q) area += qm2_checks::signed_area(m, q);
   f.area_error = std::abs(area - domain_area) / domain_area;
-  EXPECT_LE(f.area_error, 1e-3) << "mesh area " << area << " vs domain area " << domain_area;
+  EXPECT_LE(f.area_error, 2e-3) << "mesh area " << area << " vs domain area " << domain_area;
 
   // angles
   std::size_t good = 0, all = 0;
@@ -1523,54 +1525,20 @@ TEST(Buffer_layers, templates_meet_lemma_2_on_uniform_cores)
   check_lemma_2(polygons({ wavy_blob() }), "wavy blob");
 }
 
-// A blob with three blob holes (a review's random smooth domain, seed 69): each loop
-// r (1 + sum a_j cos(j t + p_j)), j from 2, then turned by 4.0513 and moved by (-0.6006, -4.4499).
-Domain blob_with_three_blob_holes()
-{
-  struct Loop { double cx, cy, r; int n; std::vector<std::pair<double, double>> terms; };
-  const std::vector<Loop> loops{
-    { 0, 0, 1, 200, { { -0.0640181775329673, 2.165295446362468 }, { 0.046703428617646155, 5.485661392111422 } } },
-    { -0.035183088266535045, -0.07165376419540115, 0.1375297141531306, 100,
-      { { -0.06001578905404075, 0.19145488122405674 }, { -0.02789588315798949, 1.5352525797421896 } } },
-    { 0.428343197146536, 0.0033443928993820426, 0.09152921453604596, 200,
-      { { 0.018701456125854374, 0.5060484416425745 }, { -0.01908623592560812, 1.6558666249350413 } } },
-    { -0.2378488937545844, 0.29899329485819026, 0.17143767680537694, 200,
-      { { -0.06892476826743786, 0.5355256105827214 }, { -0.0419115843374892, 2.490932798920455 },
-        { 0.013661717936729349, 5.832242530687267 }, { -0.026904280130381087, 3.069117006265625 } } } };
-  const double turn = 4.05128537557802, ox = -0.6006334436548713, oy = -4.449911485149787;
-  auto place = [&](double x, double y) {
-    return Point(ox + std::cos(turn) * x - std::sin(turn) * y, oy + std::sin(turn) * x + std::cos(turn) * y);
-  };
-  std::vector<std::vector<Point>> polys;
-  std::vector<Point> holes;
-  for(const Loop& l : loops) {
-    std::vector<Point> p;
-    for(int i = 0; i < l.n; ++i) {
-      const double t = 2 * pi * i / l.n;
-      double r = 1;
-      for(std::size_t j = 0; j < l.terms.size(); ++j) r += l.terms[j].first * std::cos(double(j + 2) * t + l.terms[j].second);
-      p.push_back(place(l.cx + l.r * r * std::cos(t), l.cy + l.r * r * std::sin(t)));
-    }
-    polys.push_back(p);
-    if(l.r < 1) holes.push_back(place(l.cx, l.cy));
-  }
-  return polygons(polys, holes);
-}
-
-// A notch barely out at a transition template's corner: blob_with_three_blob_holes()'s
-// (-1.3577, -5.0226) had 111.65 degrees, its core angles 45, 45 (the template's), 68 and 90,
-// its neighbours at 161 degrees and at 225 (a cut corner with 135 in its kite): no move of it
-// or its window helps, and a quad over it searched within 30 degrees of the bisector pushed a
+// A notch barely out at a transition template's corner, beside which no move of it or its
+// window helps and a quad over it searched within 30 degrees of the bisector pushes a
 // neighbour out. The quad's fourth corner lies on a thin band 45 degrees off the bisector (135
-// degrees at it, little at the 161-degree neighbour), found by searching the quad's and the
-// betas' excess together.
+// degrees at it, little at the neighbour), found by searching the quad's and the betas' excess
+// together (barely_out_start(); without it this blob keeps 1 buffer-side angle out). A
+// generated blob with three blob holes had one until loop vertices took cells of 2 s_i.
 TEST(Buffer_layers, a_notch_barely_out_is_filled_off_its_bisector)
 {
-  const Domain d = blob_with_three_blob_holes();
+  const Domain d = load_test_data("blob_notch_barely_out_43.poly");
+  ASSERT_FALSE(d.points.empty());
   Mesher mesher(d);
   mesher.run(Stage::TEMPLATES);
   EXPECT_GE(mesher.buffer_report().filled_notches, 1u);
-  check_lemma_2(d, "blob, three holes");
+  check_lemma_2(d, "blob 43");
 }
 
 // Adaptive cores (../shared/data, skipped when absent): the bisector steps and the lattice's
@@ -1882,11 +1850,11 @@ TEST(Buffer_layers, the_rounds_end_when_their_refinement_splits_no_cell)
 
 // The round observer sees each round as it ends (the tool's -v prints them so: a hard input
 // can take minutes a round), once per round, with the figures round_figures() keeps
-// (random_convex_2_20 takes two rounds; naca0012_sharp and random_star_5_31, which took
-// three and two, now take one)
+// (random_convex_11_23 takes two rounds; naca0012_sharp, random_star_5_31 and
+// random_convex_2_20, which took three, two and two, now take one)
 TEST(Buffer_layers, the_round_observer_sees_every_round_as_it_ends)
 {
-  const Domain d = load_test_data("random_convex_2_20.poly");
+  const Domain d = load_test_data("random_convex_11_23.poly");
   ASSERT_FALSE(d.points.empty());
   Mesher mesher(d);
   std::vector<Mesher::Round_figures> seen;
@@ -1931,11 +1899,13 @@ TEST(Buffer_layers, the_round_observer_sees_every_round_as_it_ends)
 // width its first round is valid; a convex 27-gon with three holes (random_sweep.py --seed
 // 1, domain 29) had one quad not convex and three angles out in its first round, until the
 // boundary band narrowed along straight stretches (a third round then mends a core quad); a
-// convex 89-gon with five holes (--seed 11, domain 53) has one quad not convex and two angles
-// out in its first round.
+// convex 89-gon with five holes (--seed 11, domain 53) had one quad not convex and two angles
+// out in its first round until loop vertices took cells of 2 s_i (then none out with Epeck);
+// a convex 71-gon with a hole (--seed 11, domain 20) has one or two quads not convex and one
+// or two angles out in its first round, by kernel.
 TEST(Buffer_layers, an_invalid_round_is_refined_at_its_angles_out_too)
 {
-  const Domain d = load_test_data("random_convex_11_53.poly");
+  const Domain d = load_test_data("random_convex_11_20.poly");
   ASSERT_FALSE(d.points.empty());
   Mesher mesher(d);
   mesher.run(Stage::BUFFER2);
@@ -2081,7 +2051,7 @@ TEST(Buffer_layers, the_move_memo_keeps_this_round_and_the_last)
 // moves start where the round before left them and are recalled.
 TEST(Buffer_layers, later_rounds_recall_most_moves)
 {
-  const Domain d = load_test_data("random_convex_2_20.poly");
+  const Domain d = load_test_data("random_convex_11_23.poly");
   ASSERT_FALSE(d.points.empty());
   Mesher mesher(d);
   mesher.run(Stage::BUFFER2);

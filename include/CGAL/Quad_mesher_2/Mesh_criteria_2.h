@@ -21,7 +21,8 @@ namespace Quad_mesher_2 {
 /// The size criteria of the quadtree (paper §4.2). A cell is split while it is
 /// - larger than `max_size()` (if set, i.e. > 0), or
 /// - larger than the spacing `s_i = min_j d_ij` of an input point `i` it contains
-///   (if `use_point_spacing()`), or
+///   (if `use_point_spacing()`), or than `2 s_i` for a domain bounded by segments (its
+///   isolated points keep `s_i`), or
 /// - larger than the user's sizing field at its centre or one of its corners (if set);
 ///
 /// for a domain bounded by segments, the first and the last only in cells meeting the
@@ -65,7 +66,7 @@ public:
   bool use_point_spacing() const { return m_use_point_spacing; }
   bool points_as_vertices() const { return m_points_as_vertices; }
   /// With segments in the input: refine so that every narrow region (two parts of the
-  /// boundary facing each other across a gap w) has cells of side <= w/3 across it (paper
+  /// boundary facing each other across a gap w) has cells of side <= w/4 across it (paper
   /// §4.2: more than two cells in every direction, so no loop merges or vanishes).
   bool resolve_narrow_regions() const { return m_resolve_narrow_regions; }
   void set_resolve_narrow_regions(bool b) { m_resolve_narrow_regions = b; }

@@ -293,15 +293,23 @@ public:
     }
   }
 
-  // Paper §4.2: the cell holding input point i is no larger than s_i = min_j d_ij.
+  // Paper §4.2: the cell holding input point i is no larger than s_i = min_j d_ij, for a
+  // domain bounded by segments no larger than `domain_spacing_factor` times that. Its loop
+  // vertices need no cells of their own: the buffer layers place the boundary's nodes by
+  // projection, keep a vertex where a corner or the chord tolerance asks, and their angle
+  // bounds (Lemmas 2 to 4) hold for any cell size. A point cloud's points, and a domain's
+  // isolated points (anchor_points()), keep s_i: Lemma 1 puts each alone in its cell.
   void refine_to_point_spacing()
   {
+    const double factor = m_domain.is_point_cloud() ? 1.0 : domain_spacing_factor;
     for(std::size_t i = 0; i < m_points.size(); ++i) {
-      const int level = point_level(i, 1);
+      const int level = point_level(i, 1 / factor);
       if(level > 0)
         m_tree.refine_at(m_points[i], level);
     }
   }
+  // one quadtree level coarser than s_i at a loop vertex: half the cells along the boundary
+  static constexpr double domain_spacing_factor = 2;
 
   // No cell larger than the user's sizing field at its centre or a corner.
   void refine_to_sizing_field()
