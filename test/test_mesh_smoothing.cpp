@@ -410,22 +410,6 @@ TEST(Mesh_smoothing, a_sliver_longer_than_its_cells_is_refined_away)
   EXPECT_LE(q.max_aspect_ratio, 10.0);
 }
 
-// greenland (../shared/data): a wedge of its second layer beside a kept
-// loop vertex at (57.90, 331.01) had aspect ratio 10.1 after the smoothing; refined there,
-// the sliver round put 2 angles out elsewhere and its mesh was not kept. The round after it
-// mends them: the largest aspect ratio is 5.2 (Epick).
-TEST(Mesh_smoothing, a_sliver_round_may_take_a_round_more_for_its_angles)
-{
-  QM::Domain_2<K> d;
-  std::string error;
-  const std::string file = std::string(QM2_SHARED_DATA_DIR) + "/greenland/greenland.poly";
-  ASSERT_TRUE(QM::IO::read_poly(file, d, &error)) << error;
-  QM::Quadtree_mesher_2<K> mesher(d);
-  const Mesh m = mesher.run();
-  const QM::Mesh_quality_2 q = expect_whole_run_within_45_135(m, mesher, "greenland.poly");
-  EXPECT_LE(q.max_aspect_ratio, 10.0);
-}
-
 // Lake Superior (the paper's case, bundled): the bulk the stage is for, as assertions on its
 // figures (measured 99.2% of angles in [60, 120], 97.6% before the vertices of three quads
 // took their Fermat points, and aspect ratios up to 6.1 with Epick: the quad that spans the

@@ -349,9 +349,8 @@ public:
   /// the aspect ratio (longest over shortest edge) above which a quad of the smoothed mesh is
   /// a sliver that `run()` refines (see there)
   static constexpr double max_sliver_ratio = 10.0;
-  /// the rounds `run()` runs again for slivers: the slivers' round, and one more for the
-  /// angles its refinement may put out; the last mesh must not add angles out
-  static constexpr int sliver_round_budget = 2;
+  /// the rounds `run()` runs again for slivers: one, whose mesh must not add angles out
+  static constexpr int sliver_round_budget = 1;
   /// valid rounds refined for angles that did not lower their count, at most
   static constexpr int max_stalled_angle_rounds = 3;
 
