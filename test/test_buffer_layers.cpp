@@ -1899,13 +1899,11 @@ TEST(Buffer_layers, the_round_observer_sees_every_round_as_it_ends)
 // width its first round is valid; a convex 27-gon with three holes (random_sweep.py --seed
 // 1, domain 29) had one quad not convex and three angles out in its first round, until the
 // boundary band narrowed along straight stretches (a third round then mends a core quad); a
-// convex 89-gon with five holes (--seed 11, domain 53) had one quad not convex and two angles
-// out in its first round until loop vertices took cells of 2 s_i (then none out with Epeck);
-// a convex 71-gon with a hole (--seed 11, domain 20) has one or two quads not convex and one
-// or two angles out in its first round, by kernel.
+// convex 89-gon with five holes (--seed 11, domain 53) has one quad not convex and three
+// angles out in its first round.
 TEST(Buffer_layers, an_invalid_round_is_refined_at_its_angles_out_too)
 {
-  const Domain d = load_test_data("random_convex_11_20.poly");
+  const Domain d = load_test_data("random_convex_11_53.poly");
   ASSERT_FALSE(d.points.empty());
   Mesher mesher(d);
   mesher.run(Stage::BUFFER2);

@@ -604,7 +604,7 @@ public:
   std::size_t core_points = 0;
   // the first quad of the first buffer layer and of the second (the core's come before)
   std::array<std::size_t, 2> layer_begin{ { std::size_t(-1), std::size_t(-1) } };
-  double feature_angle = 20.0;  // turning (degrees) that makes a loop vertex a corner
+  double feature_angle = loop_feature_angle; // turning (degrees) that makes a loop vertex a corner
   double chord_tolerance = 0;   // how far the mesh boundary may leave the input's
   Buffer_report report;
   Refinement_requests requests;

@@ -81,6 +81,16 @@ inline double corner_angle_degrees(const Point_2d& prev, const Point_2d& p, cons
   return angle_degrees(CGAL::determinant(e_next, e_prev), CGAL::scalar_product(e_next, e_prev));
 }
 
+/// the turning (degrees) from which a loop vertex is a feature, a vertex the mesh keeps; the
+/// chord tolerance may leave the others out
+constexpr double loop_feature_angle = 20.0;
+
+/// whether the loop vertex `p`, between `prev` and `next`, is a feature
+inline bool is_loop_feature(const Point_2d& prev, const Point_2d& p, const Point_2d& next)
+{
+  return std::abs(180.0 - corner_angle_degrees(prev, p, next)) >= loop_feature_angle;
+}
+
 /// Scaled Jacobian at corner `p` of a counter-clockwise polygon:
 /// cross(e_next, e_prev) / (|e_next| |e_prev|), the sine of the corner angle, in [-1, 1].
 /// Returns 0 if one of the two edges has zero length.

@@ -293,23 +293,44 @@ public:
     }
   }
 
-  // Paper §4.2: the cell holding input point i is no larger than s_i = min_j d_ij, for a
-  // domain bounded by segments no larger than `domain_spacing_factor` times that. Its loop
-  // vertices need no cells of their own: the buffer layers place the boundary's nodes by
-  // projection, keep a vertex where a corner or the chord tolerance asks, and their angle
-  // bounds (Lemmas 2 to 4) hold for any cell size. A point cloud's points, and a domain's
-  // isolated points (anchor_points()), keep s_i: Lemma 1 puts each alone in its cell.
+  // Paper §4.2: the cell holding input point i is no larger than s_i = min_j d_ij; at a
+  // domain's loop vertex that is no feature (is_loop_feature()), no larger than
+  // `domain_spacing_factor` times that. The buffer layers place the boundary's nodes by
+  // projection and the chord tolerance may leave such a vertex out: it needs no cell of its
+  // own. A feature, which the mesh keeps, does (in a coarser cell a projection came to lie
+  // next to it: slivers of aspect ratio 1200 along a saw-toothed side), and so do a point
+  // cloud's points and a domain's isolated points: Lemma 1 puts each alone in its cell.
   void refine_to_point_spacing()
   {
-    const double factor = m_domain.is_point_cloud() ? 1.0 : domain_spacing_factor;
+    const std::vector<Point_2d> own = points_in_own_cells();
     for(std::size_t i = 0; i < m_points.size(); ++i) {
-      const int level = point_level(i, 1 / factor);
+      const bool own_cell = m_domain.is_point_cloud()
+                            || std::binary_search(own.begin(), own.end(), Point_2d(m_xy[i][0], m_xy[i][1]));
+      const int level = point_level(i, own_cell ? 1.0 : 1.0 / domain_spacing_factor);
       if(level > 0)
         m_tree.refine_at(m_points[i], level);
     }
   }
-  // one quadtree level coarser than s_i at a loop vertex: half the cells along the boundary
+  // one quadtree level coarser than s_i: half the cells along smooth stretches of boundary
   static constexpr double domain_spacing_factor = 2;
+
+  // a domain's features and isolated points, sorted (as m_xy holds them)
+  std::vector<Point_2d> points_in_own_cells() const
+  {
+    std::vector<Point_2d> own;
+    for(const auto& loop : m_loops.loops) {
+      const std::size_t n = loop.vertices.size();
+      for(std::size_t k = 0; k < n; ++k) {
+        const Point_2d p = to_point_2d(m_domain.points[loop.vertices[k]]);
+        if(is_loop_feature(to_point_2d(m_domain.points[loop.vertices[(k + n - 1) % n]]), p,
+                           to_point_2d(m_domain.points[loop.vertices[(k + 1) % n]])))
+          own.push_back(p);
+      }
+    }
+    for(std::size_t v : m_loops.isolated_points) own.push_back(to_point_2d(m_domain.points[v]));
+    std::sort(own.begin(), own.end());
+    return own;
+  }
 
   // No cell larger than the user's sizing field at its centre or a corner.
   void refine_to_sizing_field()
