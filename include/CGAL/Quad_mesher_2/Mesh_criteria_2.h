@@ -21,8 +21,8 @@ namespace Quad_mesher_2 {
 /// The size criteria of the quadtree (paper §4.2). A cell is split while it is
 /// - larger than `max_size()` (if set, i.e. > 0), or
 /// - larger than the spacing `s_i = min_j d_ij` of an input point `i` it contains
-///   (if `use_point_spacing()`), or than `2 s_i` for a domain bounded by segments (its
-///   isolated points keep `s_i`), or
+///   (if `use_point_spacing()`); for a domain bounded by segments, than `2 s_i` at a loop
+///   vertex turning the boundary by less than 20 degrees, which the mesh may leave out; or
 /// - larger than the user's sizing field at its centre or one of its corners (if set);
 ///
 /// for a domain bounded by segments, the first and the last only in cells meeting the

@@ -85,10 +85,16 @@ inline double corner_angle_degrees(const Point_2d& prev, const Point_2d& p, cons
 /// chord tolerance may leave the others out
 constexpr double loop_feature_angle = 20.0;
 
+/// how much a polyline turns (degrees, in [0, 180]) at its vertex `p` between `prev` and `next`
+inline double turn_degrees(const Point_2d& prev, const Point_2d& p, const Point_2d& next)
+{
+  return std::abs(180.0 - corner_angle_degrees(prev, p, next));
+}
+
 /// whether the loop vertex `p`, between `prev` and `next`, is a feature
 inline bool is_loop_feature(const Point_2d& prev, const Point_2d& p, const Point_2d& next)
 {
-  return std::abs(180.0 - corner_angle_degrees(prev, p, next)) >= loop_feature_angle;
+  return turn_degrees(prev, p, next) >= loop_feature_angle;
 }
 
 /// Scaled Jacobian at corner `p` of a counter-clockwise polygon:

@@ -67,7 +67,7 @@ public:
     for(std::size_t k = 0; k < n; ++k) {
       const Point_2d &a = loop[k], &b = loop[(k + 1) % n], &c = loop[(k + 2) % n];
       m_arc[k + 1] = m_arc[k] + length_2d(b - a);
-      m_turn[k + 1] = m_turn[k] + std::abs(180.0 - corner_angle_degrees(a, b, c)); // at vertex k + 1
+      m_turn[k + 1] = m_turn[k] + turn_degrees(a, b, c); // at vertex k + 1
     }
   }
 
@@ -314,24 +314,6 @@ public:
   // one quadtree level coarser than s_i: half the cells along smooth stretches of boundary
   static constexpr double domain_spacing_factor = 2;
 
-  // a domain's features and isolated points, sorted (as m_xy holds them)
-  std::vector<Point_2d> points_in_own_cells() const
-  {
-    std::vector<Point_2d> own;
-    for(const auto& loop : m_loops.loops) {
-      const std::size_t n = loop.vertices.size();
-      for(std::size_t k = 0; k < n; ++k) {
-        const Point_2d p = to_point_2d(m_domain.points[loop.vertices[k]]);
-        if(is_loop_feature(to_point_2d(m_domain.points[loop.vertices[(k + n - 1) % n]]), p,
-                           to_point_2d(m_domain.points[loop.vertices[(k + 1) % n]])))
-          own.push_back(p);
-      }
-    }
-    for(std::size_t v : m_loops.isolated_points) own.push_back(to_point_2d(m_domain.points[v]));
-    std::sort(own.begin(), own.end());
-    return own;
-  }
-
   // No cell larger than the user's sizing field at its centre or a corner.
   void refine_to_sizing_field()
   {
@@ -495,6 +477,24 @@ public:
   static constexpr double band_turn_limit = 40;
 
 private:
+  // a domain's features and isolated points, sorted (as m_xy holds them)
+  std::vector<Point_2d> points_in_own_cells() const
+  {
+    std::vector<Point_2d> own;
+    for(const auto& loop : m_loops.loops) {
+      const std::size_t n = loop.vertices.size();
+      for(std::size_t k = 0; k < n; ++k) {
+        const Point_2d p = to_point_2d(m_domain.points[loop.vertices[k]]);
+        if(is_loop_feature(to_point_2d(m_domain.points[loop.vertices[(k + n - 1) % n]]), p,
+                           to_point_2d(m_domain.points[loop.vertices[(k + 1) % n]])))
+          own.push_back(p);
+      }
+    }
+    for(std::size_t v : m_loops.isolated_points) own.push_back(to_point_2d(m_domain.points[v]));
+    std::sort(own.begin(), own.end());
+    return own;
+  }
+
   void compute_point_spacing()
   {
     const std::size_t n = m_points.size();
