@@ -2,10 +2,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Author(s): Quad_mesher_2 developers
 //
-// The smoothing stage (Stage::SMOOTHING, internal/mesh_smoothing.h and vertex_splits.h):
-// vertices move to bring angles nearer 90 degrees, and vertices of three or six quads split,
-// under the hard bound: no angle in [45, 135] leaves it, none outside goes further out, no
-// quad folds or stops being convex, input vertices stay and the meshed region does not change.
+// The smoothing stage (Stage::SMOOTHING, internal/mesh_smoothing.h, boundary_slides.h and
+// vertex_splits.h): vertices move to bring angles nearer 90 degrees, and vertices of three or
+// six quads split, under the hard bound: no angle in [45, 135] leaves it, none outside goes
+// further out, no quad folds or stops being convex, input vertices stay, and boundary vertices
+// stay on the input with the boundary within the chord tolerance of the loop vertices.
 
 #include "qm2_mesh_checks.h"
 #include "qm2_test_domains.h"
@@ -14,6 +15,7 @@
 #include <CGAL/Quad_mesher_2/IO/read_poly.h>
 #include <CGAL/Quad_mesher_2/Mesh_quality_2.h>
 #include <CGAL/Quad_mesher_2/Quadtree_mesher_2.h>
+#include <CGAL/Quad_mesher_2/internal/boundary_slides.h>
 #include <CGAL/Quad_mesher_2/internal/mesh_smoothing.h>
 #include <CGAL/Quad_mesher_2/internal/vertex_splits.h>
 
@@ -140,6 +142,91 @@ TEST(Mesh_smoothing, leaves_a_pinned_vertex)
   EXPECT_EQ(xy[4], P2d(1.4, 1.3));
 }
 
+// A strip of quads outside a quarter of a 36-gon of radius 1 (the input loop), out to
+// radius 2, with 8 quads along it: its vertices on the 36-gon lie at the middle of the sides
+// from 0 to 90 degrees, but one, on the side from 40 to 50 degrees, a twentieth of the side
+// from its start: the quad between it and its neighbour has an aspect ratio of 5.2.
+struct Curved_strip
+{
+  std::vector<P2d> xy, polygon;
+  std::vector<QM::internal::Quad_vertices> quads;
+  static constexpr std::size_t squeezed = 3 * 4; // the vertex on the side from 40 to 50 degrees
+
+  Curved_strip()
+  {
+    const double degree = CGAL_PI / 180;
+    for(int k = 0; k < 36; ++k) polygon.emplace_back(std::cos(10 * k * degree), std::sin(10 * k * degree));
+    for(int i = 0; i <= 8; ++i) { // on the 36-gon's side i, then at radii 1.5 and 2
+      const double t = (5 + 10 * i) * degree;
+      xy.push_back(CGAL::midpoint(polygon[i], polygon[i + 1]));
+      xy.emplace_back(1.5 * std::cos(t), 1.5 * std::sin(t));
+      xy.emplace_back(2 * std::cos(t), 2 * std::sin(t));
+    }
+    for(std::size_t i = 0; i < 8; ++i)
+      for(std::size_t r = 0; r < 2; ++r) quads.push_back({ 3 * i + r, 3 * i + r + 1, 3 * i + r + 4, 3 * i + r + 3 });
+    xy[squeezed] = QM::internal::along_2d(polygon[4], polygon[5], 0.05);
+  }
+
+  double worst_aspect_ratio() const
+  {
+    double worst = 0;
+    for(const auto& q : quads)
+      worst = (std::max)(worst, QM::internal::quad_aspect_ratio({ xy[q[0]], xy[q[1]], xy[q[2]], xy[q[3]] }));
+    return worst;
+  }
+
+  // the distance from polygon vertex k to the strip's boundary along the 36-gon
+  double chord_distance(int k) const
+  {
+    double nearest = HUGE_VAL;
+    for(std::size_t i = 0; i < 8; ++i)
+      nearest = (std::min)(nearest, QM::internal::point_segment_distance(polygon[k], xy[3 * i], xy[3 * i + 3]));
+    return nearest;
+  }
+};
+
+// The strip's boundary vertices on the 36-gon turn the boundary at every one of them, so none
+// slides along a line through its neighbours; with the 36-gon's slides they move along the
+// side each lies on, within the chord tolerance, and the sliver widens.
+TEST(Mesh_smoothing, slides_boundary_vertices_along_the_input_on_a_curve)
+{
+  Curved_strip strip;
+  ASSERT_GT(strip.worst_aspect_ratio(), 5.0);
+  const std::vector<P2d> before = strip.xy;
+  const QM::internal::Loop_locator locator({ strip.polygon });
+  const double tolerance = 0.01;
+  const QM::internal::Boundary_slides slides(strip.xy, strip.quads, locator, tolerance);
+  EXPECT_EQ(slides.slide(0), nullptr); // the strip's ends: a boundary neighbour off the loop
+  EXPECT_EQ(slides.slide(24), nullptr);
+  EXPECT_EQ(slides.slide(1), nullptr); // not on the loop
+  for(std::size_t i = 1; i < 8; ++i) ASSERT_NE(slides.slide(3 * i), nullptr) << i;
+
+  // without the slides, the squeezed vertex stays
+  std::vector<P2d> pinned_xy = strip.xy;
+  QM::internal::Mesh_smoothing(pinned_xy, strip.quads, std::vector<char>(strip.xy.size(), 0), 1e-9).smooth(8);
+  EXPECT_EQ(pinned_xy[Curved_strip::squeezed], before[Curved_strip::squeezed]);
+
+  QM::internal::Mesh_smoothing(strip.xy, strip.quads, std::vector<char>(strip.xy.size(), 0), 1e-9, &slides).smooth(8);
+  EXPECT_NE(strip.xy[Curved_strip::squeezed], before[Curved_strip::squeezed]);
+  EXPECT_LT(strip.worst_aspect_ratio(), 4.0);
+  for(std::size_t i = 0; i <= 8; ++i)
+    EXPECT_LE(QM::internal::point_segment_distance(strip.xy[3 * i], strip.polygon[i], strip.polygon[i + 1]), 1e-15) << i;
+  for(int k = 1; k <= 8; ++k) EXPECT_LE(strip.chord_distance(k), tolerance) << k;
+}
+
+// With a chord tolerance of 0, no boundary edge moves further from a loop vertex it leaves
+// out than it was.
+TEST(Mesh_smoothing, slides_no_boundary_edge_further_from_the_loop_vertices_than_the_tolerance)
+{
+  Curved_strip strip;
+  std::vector<double> before;
+  for(int k = 1; k <= 8; ++k) before.push_back(strip.chord_distance(k));
+  const QM::internal::Loop_locator locator({ strip.polygon });
+  const QM::internal::Boundary_slides slides(strip.xy, strip.quads, locator, 0.0);
+  QM::internal::Mesh_smoothing(strip.xy, strip.quads, std::vector<char>(strip.xy.size(), 0), 1e-9, &slides).smooth(8);
+  for(int k = 1; k <= 8; ++k) EXPECT_LE(strip.chord_distance(k), before[k - 1]) << k;
+}
+
 // How far the meshed area may drift while only rounding moves the boundary: 1e-12 of it, or,
 // where the coordinates are large beside the domain (a domain far from the origin), the
 // boundary's length times the spacing of doubles there, which every stored vertex rounds to.
@@ -157,9 +244,11 @@ double area_tolerance(const Mesh& buffer2, double area)
 // of one domain: the quads the same but where a vertex split gave a corner to a new vertex,
 // and new quads after them; input points where they were; every corner in [45, 135] still in
 // it and every other no further out, every new quad in it; valid, conforming, no vertices
-// closer than 1e-8 of the diagonal; the meshed area the same; the share of angles in
-// [60, 120] not lower.
-void expect_smoothing_keeps_the_bound(const Mesh& buffer2, const Mesh& smoothed, const std::string& name)
+// closer than 1e-8 of the diagonal; the meshed area the same but for boundary vertices
+// sliding along the input, each boundary edge moving by at most `chord_tolerance` (absolute)
+// across; the share of angles in [60, 120] not lower.
+void expect_smoothing_keeps_the_bound(const Mesh& buffer2, const Mesh& smoothed, const std::string& name,
+                                      double chord_tolerance)
 {
   const std::size_t n_quads = buffer2.quads.size(), n_points = buffer2.points.size();
   ASSERT_GE(smoothed.quads.size(), n_quads) << name;
@@ -186,7 +275,10 @@ void expect_smoothing_keeps_the_bound(const Mesh& buffer2, const Mesh& smoothed,
         EXPECT_LE(std::abs(b - 90), std::abs(a - 90) + 1e-7) << name << ": quad " << q << " corner " << c;
     }
   }
-  EXPECT_NEAR(area_after, area_before, area_tolerance(buffer2, area_before)) << name;
+  double boundary_length = 0;
+  for(const auto& e : buffer2.boundary_edges)
+    boundary_length += std::sqrt(CGAL::to_double(CGAL::squared_distance(buffer2.points[e.v0], buffer2.points[e.v1])));
+  EXPECT_NEAR(area_after, area_before, area_tolerance(buffer2, area_before) + chord_tolerance * boundary_length) << name;
   const QM::Mesh_quality_2 before = QM::compute_quality(buffer2), after = QM::compute_quality(smoothed);
   EXPECT_TRUE(after.is_valid()) << name;
   EXPECT_EQ(after.number_of_near_duplicate_vertices, 0u) << name;
@@ -206,6 +298,52 @@ void expect_input_points_stay(const QM::Domain_2<K>& d, const Mesh& buffer2, con
   EXPECT_GT(kept, 0u) << name;
 }
 
+double box_diagonal(const QM::Domain_2<K>& d)
+{
+  const CGAL::Bbox_2 box = CGAL::bbox_2(d.points.begin(), d.points.end());
+  return std::hypot(box.xmax() - box.xmin(), box.ymax() - box.ymin());
+}
+
+// the distance from p to the nearest boundary edge of m
+double distance_to_boundary(const Mesh& m, const P2d& p)
+{
+  double nearest = HUGE_VAL;
+  for(const auto& e : m.boundary_edges)
+    nearest = (std::min)(nearest, QM::internal::point_segment_distance(p, QM::internal::to_point_2d(m.points[e.v0]),
+                                                                      QM::internal::to_point_2d(m.points[e.v1])));
+  return nearest;
+}
+
+// The boundary after the smoothing: every boundary vertex that moved lies on an input segment
+// (to 1e-12 of the diagonal, or the coordinates' rounding far from the origin), and every loop vertex is within the chord tolerance (the
+// mesher's default, 1e-3 of the diagonal) of the mesh's boundary, or no further than it was.
+void expect_boundary_on_the_input(const QM::Domain_2<K>& d, const Mesh& buffer2, const Mesh& smoothed,
+                                  const std::string& name)
+{
+  const double diagonal = box_diagonal(d), tolerance = 1e-3 * diagonal;
+  std::vector<std::array<P2d, 2>> segments;
+  for(const auto& s : d.segments)
+    segments.push_back({ QM::internal::to_point_2d(d.points[s[0]]), QM::internal::to_point_2d(d.points[s[1]]) });
+  for(const auto& e : smoothed.boundary_edges) {
+    const std::size_t v = e.v0;
+    if(smoothed.points[v] == buffer2.points[v]) continue;
+    const P2d p = QM::internal::to_point_2d(smoothed.points[v]);
+    double nearest = HUGE_VAL;
+    std::size_t at = 0;
+    for(std::size_t k = 0; k < segments.size(); ++k) {
+      const double distance = QM::internal::point_segment_distance(p, segments[k][0], segments[k][1]);
+      if(distance < nearest) { nearest = distance; at = k; }
+    }
+    const double rounding = 16 * QM::internal::coordinate_rounding_2d(segments[at][0], segments[at][1]);
+    EXPECT_LE(nearest, (std::max)(1e-12 * diagonal, rounding)) << name << ": boundary vertex " << v << " left the input";
+  }
+  for(const Point_2& input : d.points) {
+    const P2d p = QM::internal::to_point_2d(input);
+    EXPECT_LE(distance_to_boundary(smoothed, p), (std::max)(tolerance, distance_to_boundary(buffer2, p)))
+        << name << ": loop vertex (" << p.x() << ", " << p.y() << ")";
+  }
+}
+
 // checks one domain (see above); adds the vertex splits the stage made to `splits`
 void check_domain(const QM::Domain_2<K>& d, const std::string& name, std::size_t& splits)
 {
@@ -215,8 +353,9 @@ void check_domain(const QM::Domain_2<K>& d, const std::string& name, std::size_t
   ASSERT_NO_THROW(smoothed = mesher.run()) << name;
   EXPECT_GT(mesher.smoothing_moves(), 0u) << name;
   EXPECT_EQ(smoothed.quads.size() - buffer2.quads.size(), mesher.vertex_splits()) << name;
-  expect_smoothing_keeps_the_bound(buffer2, smoothed, name);
+  expect_smoothing_keeps_the_bound(buffer2, smoothed, name, 1e-3 * box_diagonal(d));
   expect_input_points_stay(d, buffer2, smoothed, name);
+  expect_boundary_on_the_input(d, buffer2, smoothed, name);
   splits += mesher.vertex_splits();
 }
 
@@ -422,7 +561,8 @@ TEST(Mesh_smoothing, raises_the_bulk_quality_of_lake_superior)
   QM::Quadtree_mesher_2<K> mesher(d);
   const Mesh buffer2 = mesher.run(QM::Stage::BUFFER2);
   const Mesh smoothed = mesher.run();
-  expect_smoothing_keeps_the_bound(buffer2, smoothed, "lake_superior");
+  expect_smoothing_keeps_the_bound(buffer2, smoothed, "lake_superior", 1e-3 * box_diagonal(d));
+  expect_boundary_on_the_input(d, buffer2, smoothed, "lake_superior");
   const QM::Mesh_quality_2 before = QM::compute_quality(buffer2), after = QM::compute_quality(smoothed);
   EXPECT_LT(before.share_in_60_120, 0.90);
   EXPECT_GT(after.share_in_60_120, 0.985);

@@ -237,7 +237,8 @@ public:
   /// Stage 7 (domains only, not in the paper) on `mesh`, a valid result of the buffer stages:
   /// its vertices move towards places that bring its angles nearer 90°, each move kept only
   /// under the bound of `internal::Mesh_smoothing`; input vertices and isolated points stay,
-  /// and boundary vertices move only along straight runs of the boundary. Then interior
+  /// and boundary vertices move only along the input segment they lie on, keeping the loop
+  /// vertices the boundary leaves out within the chord tolerance. Then interior
   /// vertices of three or six quads split where that keeps the bound (`internal::Vertex_splits`:
   /// new vertices and quads are appended), and the mesh is smoothed again.
   /// The whole-mesh check runs again on the result, and `mesh` is left as it was if that
@@ -254,11 +255,13 @@ public:
     // the verifier's 1e-8 of the diagonal), below the finest cells of deep trees (30P30N's,
     // depth 22: about 1.7e-7 of the diagonal), which a larger floor would freeze
     const double min_edge = 1e-7 * box_diagonal();
+    const auto locator = internal::make_loop_locator(m_domain, m_loops);
+    const internal::Boundary_slides slides(xy, mesh.quads, *locator, m_criteria.chord_tolerance() * locator->diagonal());
     Mesh unsmoothed = mesh;
-    m_smoothing_moves = internal::Mesh_smoothing(xy, mesh.quads, pinned, min_edge).smooth(max_smoothing_passes);
+    m_smoothing_moves = internal::Mesh_smoothing(xy, mesh.quads, pinned, min_edge, &slides).smooth(max_smoothing_passes);
     m_vertex_splits = internal::Vertex_splits(xy, mesh.quads, pinned, min_edge).split_all();
     pinned.resize(xy.size(), 0);
-    m_smoothing_moves += internal::Mesh_smoothing(xy, mesh.quads, pinned, min_edge).smooth(max_smoothing_passes);
+    m_smoothing_moves += internal::Mesh_smoothing(xy, mesh.quads, pinned, min_edge, &slides).smooth(max_smoothing_passes);
     mesh.points.resize(xy.size(), Point_2(0, 0));
     for(std::size_t v = 0; v < xy.size(); ++v)
       if(v >= before.size() || xy[v] != before[v]) mesh.points[v] = Point_2(xy[v].x(), xy[v].y());

@@ -6,11 +6,14 @@
 // its stages give them): vertices move, one at a time, towards places that bring the angles of
 // their quads nearer 90 degrees, under the hard bound. Interior vertices move freely; a
 // boundary vertex between two boundary neighbours on one line slides along that line, which
-// leaves the meshed region as it was; input vertices and isolated points stay.
+// leaves the meshed region as it was; one on a curved stretch slides along the input segment
+// it lies on, within the chord tolerance (boundary_slides.h); input vertices and isolated
+// points stay.
 
 #ifndef CGAL_QUAD_MESHER_2_INTERNAL_MESH_SMOOTHING_H
 #define CGAL_QUAD_MESHER_2_INTERNAL_MESH_SMOOTHING_H
 
+#include <CGAL/Quad_mesher_2/internal/boundary_slides.h>
 #include <CGAL/Quad_mesher_2/internal/mesh_adjacency.h>
 #include <CGAL/Quad_mesher_2/internal/quad_geometry.h>
 #include <CGAL/Quad_mesher_2/internal/wedge_winding.h>
@@ -112,10 +115,11 @@ public:
   typedef Quad_vertices Quad;
 
   /// `pinned`: the vertices that may not move (input vertices, isolated points); boundary
-  /// vertices not between two boundary neighbours on one line stay too.
+  /// vertices not between two boundary neighbours on one line stay too, unless `slides` has
+  /// a slide for them (null: none has).
   Mesh_smoothing(std::vector<Point_2d>& xy, const std::vector<Quad>& quads, const std::vector<char>& pinned,
-                 double min_edge)
-    : m_xy(xy), m_quads(quads), m_quads_at(quads, xy.size()), m_min_edge2(min_edge * min_edge),
+                 double min_edge, const Boundary_slides* slides = nullptr)
+    : m_xy(xy), m_quads(quads), m_quads_at(quads, xy.size()), m_slides(slides), m_min_edge2(min_edge * min_edge),
       m_freedom(xy.size(), FREE), m_boundary_prev(xy.size(), none), m_boundary_next(xy.size(), none),
       m_descended(xy.size(), 0)
   {
@@ -153,7 +157,9 @@ public:
   }
 
 private:
-  enum Freedom : unsigned char { PINNED, FREE, SLIDING };
+  // SLIDING: along the line through its boundary neighbours; ALONG_INPUT: along its slide's
+  // input segment
+  enum Freedom : unsigned char { PINNED, FREE, SLIDING, ALONG_INPUT };
   static constexpr std::size_t none = std::size_t(-1);
   // an energy gain below this (a few hundredths of a degree on one angle near 60) is not
   // worth a move
@@ -161,8 +167,9 @@ private:
   static constexpr int max_descent_steps = 4;
 
   // Boundary edges are the quad edges a -> b without b -> a. A vertex with one boundary edge
-  // in and one out, on a line with its two boundary neighbours, slides; other boundary
-  // vertices (corners, curves, vertices where two loops touch) stay.
+  // in and one out, on a line with its two boundary neighbours, slides; elsewhere it slides
+  // along the input if it has a slide; other boundary vertices (corners, vertices where two
+  // loops touch) stay.
   void find_boundary()
   {
     std::vector<int> boundary_edges(m_xy.size(), 0);
@@ -174,7 +181,9 @@ private:
     });
     for(std::size_t v = 0; v < m_xy.size(); ++v) {
       if(boundary_edges[v] == 0) continue;
-      m_freedom[v] = boundary_edges[v] == 2 && on_line_between(v) ? SLIDING : PINNED;
+      if(boundary_edges[v] != 2) m_freedom[v] = PINNED;
+      else if(on_line_between(v)) m_freedom[v] = SLIDING;
+      else m_freedom[v] = m_slides != nullptr && m_slides->slide(v) != nullptr ? ALONG_INPUT : PINNED;
     }
   }
 
@@ -254,7 +263,7 @@ private:
       const int c = corner_of(Q, v);
       wedges.emplace_back(m_xy[Q[(c + 1) % 4]], m_xy[Q[(c + 3) % 4]]);
     }
-    if(m_freedom[v] == SLIDING) wedges.emplace_back(m_xy[m_boundary_prev[v]], m_xy[m_boundary_next[v]]);
+    if(on_boundary(v)) wedges.emplace_back(m_xy[m_boundary_prev[v]], m_xy[m_boundary_next[v]]);
     return times_wedges_cover(m_xy[v], wedges) == 1;
   }
 
@@ -284,7 +293,7 @@ private:
     Targets t;
     t.places[t.count++] = ORIGIN + parallelogram / n;
     t.places[t.count++] = ORIGIN + neighbours / (2 * n);
-    if(m_freedom[v] == SLIDING) t.places[t.count++] = CGAL::midpoint(m_xy[m_boundary_prev[v]], m_xy[m_boundary_next[v]]);
+    if(on_boundary(v)) t.places[t.count++] = CGAL::midpoint(m_xy[m_boundary_prev[v]], m_xy[m_boundary_next[v]]);
     return t;
   }
 
@@ -303,15 +312,39 @@ private:
     return fermat_point_2d(around[0], around[1], around[2], p);
   }
 
+  bool on_boundary(std::size_t v) const { return m_freedom[v] == SLIDING || m_freedom[v] == ALONG_INPUT; }
+
+  // the line a boundary vertex slides along: through its boundary neighbours, or its slide's
+  // input segment
+  std::array<Point_2d, 2> slide_line(std::size_t v) const
+  {
+    if(m_freedom[v] == ALONG_INPUT) {
+      const Boundary_slide& s = *m_slides->slide(v);
+      return { s.a, s.b };
+    }
+    return { m_xy[m_boundary_prev[v]], m_xy[m_boundary_next[v]] };
+  }
+
   // the point of the line through v's boundary neighbours nearest to p, kept a tenth of the
-  // way from each
+  // way from each; along the input, the point of the slide's segment nearest to p, kept as
+  // far from the neighbours as they project on it
   Point_2d on_boundary_line(std::size_t v, const Point_2d& p) const
   {
-    const Point_2d& a = m_xy[m_boundary_prev[v]];
-    const Point_2d& b = m_xy[m_boundary_next[v]];
-    const Vector_2d ab = b - a;
-    const double t = CGAL::scalar_product(p - a, ab) / ab.squared_length();
-    return along_2d(a, b, (std::min)(0.9, (std::max)(0.1, t)));
+    const Point_2d& prev = m_xy[m_boundary_prev[v]];
+    const Point_2d& next = m_xy[m_boundary_next[v]];
+    if(m_freedom[v] == SLIDING) {
+      const Vector_2d ab = next - prev;
+      const double t = CGAL::scalar_product(p - prev, ab) / ab.squared_length();
+      return along_2d(prev, next, (std::min)(0.9, (std::max)(0.1, t)));
+    }
+    const Boundary_slide& s = *m_slides->slide(v);
+    const Vector_2d ab = s.b - s.a;
+    auto param = [&](const Point_2d& x) { return CGAL::scalar_product(x - s.a, ab) / ab.squared_length(); };
+    const double t_prev = param(prev), t_next = param(next);
+    const double margin = 0.1 * std::abs(t_next - t_prev);
+    const double lo = (std::max)(0.0, (std::min)(t_prev, t_next) + margin);
+    const double hi = (std::min)(1.0, (std::max)(t_prev, t_next) - margin);
+    return along_2d(s.a, s.b, (std::min)(hi, (std::max)(lo, param(p))));
   }
 
   // whether v is kept at p: the star's energy is lower than `before`'s, by more than a
@@ -321,7 +354,10 @@ private:
     const Point_2d start = m_xy[v];
     m_xy[v] = p;
     star(v, after);
-    if(after.energy < before.energy - min_gain && keeps_the_bound(before, after) && unfolded(v)) return true;
+    if(after.energy < before.energy - min_gain && keeps_the_bound(before, after) && unfolded(v)
+       && (m_freedom[v] != ALONG_INPUT
+           || m_slides->keeps_chords(v, start, p, m_xy[m_boundary_prev[v]], m_xy[m_boundary_next[v]])))
+      return true;
     m_xy[v] = start;
     return false;
   }
@@ -348,7 +384,7 @@ private:
       const Point_2d& target = t.places[k];
       for(double step : { 1.0, 0.5, 0.25 }) {
         Point_2d p = along_2d(start, target, step);
-        if(m_freedom[v] == SLIDING) p = on_boundary_line(v, p);
+        if(on_boundary(v)) p = on_boundary_line(v, p);
         if(p != start && better_at(v, p, before, after)) {
           moved = true;
           break;
@@ -387,7 +423,7 @@ private:
       bool better = false;
       for(double step = h; step >= h / 16 && !better; step /= 2) {
         Point_2d p = m_xy[v] + step * unit;
-        if(m_freedom[v] == SLIDING) p = on_boundary_line(v, p);
+        if(on_boundary(v)) p = on_boundary_line(v, p);
         better = p != m_xy[v] && better_at(v, p, before, after);
       }
       if(!better) break;
@@ -398,14 +434,15 @@ private:
   }
 
   // the gradient of the star's energy at v, by forward differences of step `delta` (along the
-  // line through its boundary neighbours for a sliding vertex)
+  // line it slides along for a boundary vertex)
   Vector_2d energy_gradient(std::size_t v, double energy, double delta)
   {
     const Point_2d start = m_xy[v];
     std::array<Vector_2d, 2> axes = { Vector_2d(1, 0), Vector_2d(0, 1) };
     int n_axes = 2;
-    if(m_freedom[v] == SLIDING) {
-      axes[0] = normalized_2d(m_xy[m_boundary_next[v]] - m_xy[m_boundary_prev[v]]);
+    if(on_boundary(v)) {
+      const auto [a, b] = slide_line(v);
+      axes[0] = normalized_2d(b - a);
       n_axes = 1;
     }
     Vector_2d gradient = NULL_VECTOR;
@@ -422,6 +459,7 @@ private:
   std::vector<Point_2d>& m_xy;
   const std::vector<Quad>& m_quads;
   Vertex_quads m_quads_at;
+  const Boundary_slides* m_slides;
   double m_min_edge2;
   std::vector<Freedom> m_freedom;
   std::vector<std::size_t> m_boundary_prev, m_boundary_next;
