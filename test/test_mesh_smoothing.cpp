@@ -298,9 +298,11 @@ void expect_input_points_stay(const QM::Domain_2<K>& d, const Mesh& buffer2, con
   EXPECT_GT(kept, 0u) << name;
 }
 
+// the diagonal of the loops' bounding box (the chord tolerance's unit)
 double box_diagonal(const QM::Domain_2<K>& d)
 {
-  const CGAL::Bbox_2 box = CGAL::bbox_2(d.points.begin(), d.points.end());
+  CGAL::Bbox_2 box;
+  for(const auto& s : d.segments) box += d.points[s[0]].bbox();
   return std::hypot(box.xmax() - box.xmin(), box.ymax() - box.ymin());
 }
 
@@ -315,8 +317,9 @@ double distance_to_boundary(const Mesh& m, const P2d& p)
 }
 
 // The boundary after the smoothing: every boundary vertex that moved lies on an input segment
-// (to 1e-12 of the diagonal, or the coordinates' rounding far from the origin), and every loop vertex is within the chord tolerance (the
-// mesher's default, 1e-3 of the diagonal) of the mesh's boundary, or no further than it was.
+// (to 1e-12 of the diagonal, or the coordinates' rounding far from the origin), and every
+// loop vertex is within the chord tolerance (the mesher's default, 1e-3 of the diagonal) of
+// the mesh's boundary, or no further than it was.
 void expect_boundary_on_the_input(const QM::Domain_2<K>& d, const Mesh& buffer2, const Mesh& smoothed,
                                   const std::string& name)
 {

@@ -261,6 +261,7 @@ public:
     m_smoothing_moves = internal::Mesh_smoothing(xy, mesh.quads, pinned, min_edge, &slides).smooth(max_smoothing_passes);
     m_vertex_splits = internal::Vertex_splits(xy, mesh.quads, pinned, min_edge).split_all();
     pinned.resize(xy.size(), 0);
+    // the splits change interior vertices only: the boundary, and so the slides, stay
     m_smoothing_moves += internal::Mesh_smoothing(xy, mesh.quads, pinned, min_edge, &slides).smooth(max_smoothing_passes);
     mesh.points.resize(xy.size(), Point_2(0, 0));
     for(std::size_t v = 0; v < xy.size(); ++v)

@@ -24,12 +24,13 @@ namespace CGAL {
 namespace Quad_mesher_2 {
 namespace internal {
 
-/// One boundary vertex's slide: the input segment it lies on, and the loop vertices that the
-/// boundary edge from its previous boundary neighbour, and the one to its next, leave out.
+/// One boundary vertex's slide: the input segment (a, b) it lies on, and where the loop
+/// vertices that the boundary edge from its previous boundary neighbour, and the one to its
+/// next, leave out are in `Boundary_slides`' list of them: [before, after) and [after, end).
 struct Boundary_slide
 {
   Point_2d a, b;
-  std::vector<Point_2d> left_out_before, left_out_after;
+  std::size_t before = 0, after = 0, end = 0;
 };
 
 /// The slides of a quad mesh's boundary vertices (see the file comment).
@@ -44,27 +45,25 @@ public:
   {
     const Vertex_quads quads_at(quads, xy.size());
     std::vector<int> boundary_edges(xy.size(), 0);
-    std::vector<std::array<std::size_t, 2>> edges;
+    std::vector<std::size_t> prev(xy.size(), none), next(xy.size(), none);
     for_each_boundary_edge(quads, quads_at, xy.size(), [&](std::size_t a, std::size_t b) {
       ++boundary_edges[a];
       ++boundary_edges[b];
-      edges.push_back({ a, b });
+      next[a] = b;
+      prev[b] = a;
     });
     std::vector<Loop_locator::Hit> hit(xy.size());
-    std::vector<char> on_loop(xy.size(), 0), inside_segment(xy.size(), 0);
+    std::vector<char> on_loop(xy.size(), 0);
     for(std::size_t v = 0; v < xy.size(); ++v)
-      if(boundary_edges[v] == 2) {
-        on_loop[v] = on_the_loops(locator, xy[v], hit[v]);
+      if(boundary_edges[v] == 2) on_loop[v] = on_the_loops(locator, xy[v], hit[v]);
+    for(std::size_t v = 0; v < xy.size(); ++v)
+      if(on_loop[v] != 0 && !at_a_loop_vertex(locator, xy[v], hit[v])) {
         const auto& loop = locator.loop(hit[v].loop);
-        inside_segment[v] = on_loop[v] != 0 && xy[v] != loop[hit[v].edge] && xy[v] != loop[(hit[v].edge + 1) % loop.size()];
-      }
-    for(std::size_t v = 0; v < xy.size(); ++v)
-      if(inside_segment[v] != 0) {
         m_slide_of[v] = m_slides.size();
-        const auto& loop = locator.loop(hit[v].loop);
-        m_slides.push_back({ loop[hit[v].edge], loop[(hit[v].edge + 1) % loop.size()], {}, {} });
+        m_slides.push_back({ loop[hit[v].edge], loop[(hit[v].edge + 1) % loop.size()] });
       }
-    for(const auto& e : edges) add_left_out(locator, e[0], e[1], hit, on_loop);
+    for(std::size_t v = 0; v < xy.size(); ++v)
+      if(m_slide_of[v] != none) add_left_out(locator, v, prev[v], next[v], hit, on_loop);
   }
 
   /// v's slide, or null if v stays (not inside an input segment, its boundary edges do not
@@ -77,18 +76,26 @@ public:
   /// whether v at `p`, between boundary neighbours at `prev` and `next`, keeps each loop
   /// vertex its boundary edges leave out within the tolerance, or no further than `from`
   /// (v's place now) kept it
-  bool keeps_chords(std::size_t v, const Point_2d& from, const Point_2d& p, const Point_2d& prev, const Point_2d& next) const
+  bool keeps_chords(std::size_t v, const Point_2d& from, const Point_2d& p, const Point_2d& prev,
+                    const Point_2d& next) const
   {
     const Boundary_slide& s = m_slides[m_slide_of[v]];
-    for(const Point_2d& g : s.left_out_before)
-      if(point_segment_distance(g, prev, p) > (std::max)(m_tolerance, point_segment_distance(g, prev, from))) return false;
-    for(const Point_2d& g : s.left_out_after)
-      if(point_segment_distance(g, p, next) > (std::max)(m_tolerance, point_segment_distance(g, from, next))) return false;
+    for(std::size_t k = s.before; k < s.after; ++k)
+      if(further(m_left_out[k], prev, p, prev, from)) return false;
+    for(std::size_t k = s.after; k < s.end; ++k)
+      if(further(m_left_out[k], p, next, from, next)) return false;
     return true;
   }
 
 private:
   static constexpr std::size_t none = std::size_t(-1);
+
+  // whether g is beyond the tolerance of edge (a, b), and further than from edge (c, d)
+  bool further(const Point_2d& g, const Point_2d& a, const Point_2d& b, const Point_2d& c, const Point_2d& d) const
+  {
+    return point_segment_distance(g, a, b) > (std::max)(m_tolerance, point_segment_distance(g, c, d));
+  }
+
   // an edge leaving out more loop vertices than this follows the loop too loosely to judge
   static constexpr std::size_t max_left_out = 64;
 
@@ -98,30 +105,37 @@ private:
     const double near = 1e-10 * locator.diagonal();
     h = locator.closest(p, near);
     const auto& loop = locator.loop(h.loop);
-    return h.dist <= (std::max)(near, 16 * coordinate_rounding_2d(loop[h.edge], loop[(h.edge + 1) % loop.size()]));
+    const Point_2d& a = loop[h.edge];
+    const Point_2d& b = loop[(h.edge + 1) % loop.size()];
+    return h.dist <= (std::max)(near, 16 * coordinate_rounding_2d(a, b));
   }
 
-  // The boundary edge u -> w: the loop vertices between u and w along their loop, the shorter
-  // way round, join u's and w's lists. Where u or w is off the loops, they lie on different
-  // loops, or far apart along theirs, neither slides.
-  void add_left_out(const Loop_locator& locator, std::size_t u, std::size_t w, const std::vector<Loop_locator::Hit>& hit,
-                    const std::vector<char>& on_loop)
+  static bool at_a_loop_vertex(const Loop_locator& locator, const Point_2d& p, const Loop_locator::Hit& h)
   {
-    if(m_slide_of[u] == none && m_slide_of[w] == none) return;
-    const Loop_locator::Hit& hu = hit[u];
-    const Loop_locator::Hit& hw = hit[w];
-    const bool same_loop = on_loop[u] != 0 && on_loop[w] != 0 && hu.loop == hw.loop;
-    std::vector<Point_2d> between;
-    if(!same_loop || !loop_vertices_between(locator, hu, hw, between)) {
-      m_slide_of[u] = m_slide_of[w] = none;
-      return;
-    }
-    if(m_slide_of[u] != none) m_slides[m_slide_of[u]].left_out_after = between;
-    if(m_slide_of[w] != none) m_slides[m_slide_of[w]].left_out_before = between;
+    const auto& loop = locator.loop(h.loop);
+    return p == loop[h.edge] || p == loop[(h.edge + 1) % loop.size()];
   }
 
-  // the loop vertices strictly between two points of one loop, the shorter way round; false
-  // if that is over a quarter of the loop or leaves out too many
+  // v's lists: the loop vertices between its boundary neighbours u and w and itself, along
+  // their loop the shorter way round. Where a neighbour is off the loops, on another loop, or
+  // far from v along theirs, v does not slide.
+  void add_left_out(const Loop_locator& locator, std::size_t v, std::size_t u, std::size_t w,
+                    const std::vector<Loop_locator::Hit>& hit, const std::vector<char>& on_loop)
+  {
+    auto beside = [&](std::size_t n) { return n != none && on_loop[n] != 0 && hit[n].loop == hit[v].loop; };
+    Boundary_slide& s = m_slides[m_slide_of[v]];
+    s.before = m_left_out.size();
+    bool follows = beside(u) && loop_vertices_between(locator, hit[u], hit[v], m_left_out);
+    s.after = m_left_out.size();
+    follows = follows && beside(w) && loop_vertices_between(locator, hit[v], hit[w], m_left_out);
+    s.end = m_left_out.size();
+    if(follows) return;
+    m_left_out.resize(s.before);
+    m_slide_of[v] = none;
+  }
+
+  // appends the loop vertices strictly between two points of one loop, the shorter way round,
+  // to `between`; false if that is over a quarter of the loop or leaves out too many
   static bool loop_vertices_between(const Loop_locator& locator, const Loop_locator::Hit& p, const Loop_locator::Hit& q,
                                     std::vector<Point_2d>& between)
   {
@@ -134,12 +148,13 @@ private:
     if(!(span < L / 4)) return false;
     const auto& loop = locator.loop(l);
     const double s0 = locator.param(first);
+    const std::size_t start = between.size();
     std::size_t k = (first.edge + 1) % loop.size();
     for(std::size_t step = 0; step < loop.size(); ++step, k = (k + 1) % loop.size()) {
       const double s = std::fmod(locator.arc(l, k) - s0 + L, L);
       if(s == 0) continue; // the vertex `first` lies on
       if(!(s < span)) break;
-      if(between.size() == max_left_out) return false;
+      if(between.size() - start == max_left_out) return false;
       between.push_back(loop[k]);
     }
     return true;
@@ -147,6 +162,7 @@ private:
 
   std::vector<std::size_t> m_slide_of;
   std::vector<Boundary_slide> m_slides;
+  std::vector<Point_2d> m_left_out; // the loop vertices of each slide's lists, slide after slide
   double m_tolerance;
 };
 

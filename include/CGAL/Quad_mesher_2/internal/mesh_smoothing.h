@@ -344,6 +344,7 @@ private:
     const double margin = 0.1 * std::abs(t_next - t_prev);
     const double lo = (std::max)(0.0, (std::min)(t_prev, t_next) + margin);
     const double hi = (std::min)(1.0, (std::max)(t_prev, t_next) - margin);
+    if(lo > hi) return m_xy[v]; // both neighbours project beyond one end: no room
     return along_2d(s.a, s.b, (std::min)(hi, (std::max)(lo, param(p))));
   }
 
