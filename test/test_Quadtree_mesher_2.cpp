@@ -621,7 +621,7 @@ TEST(Quadtree_mesher_2, loop_turning_sums_the_turns_near_a_point)
   EXPECT_NEAR(notch.within(4.0 + std::sqrt(2.0), 0.1), 90.0, 1e-9);
 }
 
-// The quadtree's band along the boundary (refine_boundary_band()): two cells along a
+// The quadtree's band along the boundary (refine_boundary_band()): one cell along a
 // straight side, three within three cells of a corner or of a curve turning by over 40°.
 TEST(Quadtree_mesher_2, boundary_band_is_wider_where_the_boundary_turns)
 {

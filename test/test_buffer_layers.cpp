@@ -939,13 +939,15 @@ TEST(Buffer_layers, the_optimiser_counts_an_angle_out_as_the_final_check_does)
 // domain 16): a loop vertex of 161 degrees (no corner: it turns by less than the feature
 // angle) was the middle node of a fan of boundary edges, a quad of 161 degrees there that
 // no move can open; the pairing paid a hundred degrees more for it and chose it round after
-// round (exit 4). Such a fan now costs as a flat corner: two rounds, none out.
+// round (exit 4). Such a fan now costs as a flat corner: two rounds, none out (three since
+// the quadtree's boundary band narrowed to one cell along straight stretches: the first
+// round's core is cut by a narrow passage, the second is the two-round mesh's first).
 TEST(Buffer_layers, a_wide_loop_vertex_is_not_the_middle_of_a_fan)
 {
   const Domain d = load_test_data("random_twoopt_19_16.poly");
   Mesher mesher(d);
   expect_random_case_meets_45_135(mesher, d, "random 2-opt with a wide loop vertex", 1e-7);
-  EXPECT_LE(mesher.rounds(), 2);
+  EXPECT_LE(mesher.rounds(), 3);
 }
 
 // Corners over 270 degrees whose fans may take four F points: a strip took four at all of
@@ -955,10 +957,12 @@ TEST(Buffer_layers, a_wide_loop_vertex_is_not_the_middle_of_a_fan)
 // by their own width its core no longer has them. A convex 12-gon with five holes (seed 1,
 // domain 59) had five, one taking four, until the requests of one round refined one level
 // together. A convex 17-gon with four holes, 9.5e6 from the origin (random_domains.py
-// --seed 1, domain 62), has two, one taking four.
+// --seed 1, domain 62), had two, one taking four, until the quadtree's boundary band narrowed
+// to one cell along straight stretches. A star of 188 vertices with a hole, 6.9e6 from the
+// origin (random_domains.py --seed 11, domain 36), has two on one strip, one taking four.
 TEST(Buffer_layers, the_corners_of_one_strip_take_four_fan_points_one_by_one)
 {
-  const Domain d = load_test_data("random_convex_1_62.poly");
+  const Domain d = load_test_data("random_star_11_36.poly");
   ASSERT_FALSE(d.points.empty());
   Mesher mesher(d);
   const Mesh m = mesher.run(Stage::BUFFER2);
@@ -1530,15 +1534,17 @@ TEST(Buffer_layers, templates_meet_lemma_2_on_uniform_cores)
 // neighbour out. The quad's fourth corner lies on a thin band 45 degrees off the bisector (135
 // degrees at it, little at the neighbour), found by searching the quad's and the betas' excess
 // together (barely_out_start(); without it this blob keeps 1 buffer-side angle out). A
-// generated blob with three blob holes had one until loop vertices took cells of 2 s_i.
+// generated blob with three blob holes had one until loop vertices took cells of 2 s_i,
+// another (transform_sweep.py blobs, seed 43) until the quadtree's boundary band narrowed to
+// one cell along straight stretches; seed 38's has one now.
 TEST(Buffer_layers, a_notch_barely_out_is_filled_off_its_bisector)
 {
-  const Domain d = load_test_data("blob_notch_barely_out_43.poly");
+  const Domain d = load_test_data("blob_notch_barely_out_38.poly");
   ASSERT_FALSE(d.points.empty());
   Mesher mesher(d);
   mesher.run(Stage::TEMPLATES);
   EXPECT_GE(mesher.buffer_report().filled_notches, 1u);
-  check_lemma_2(d, "blob 43");
+  check_lemma_2(d, "blob 38");
 }
 
 // Adaptive cores (../shared/data, skipped when absent): the bisector steps and the lattice's

@@ -473,7 +473,7 @@ public:
   {
     return turning.within(s, turning_band * h) > band_turn_limit ? turning_band : straight_band;
   }
-  static constexpr int straight_band = 2, turning_band = 3;
+  static constexpr int straight_band = 1, turning_band = 3;
   static constexpr double band_turn_limit = 40;
 
 private:
