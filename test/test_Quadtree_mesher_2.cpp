@@ -622,7 +622,7 @@ TEST(Quadtree_mesher_2, loop_turning_sums_the_turns_near_a_point)
 }
 
 // The quadtree's band along the boundary (refine_boundary_band()): one cell along a
-// straight side, three within three cells of a corner or of a curve turning by over 40°.
+// straight side, three within three cells of a corner or of a curve turning by over 50°.
 TEST(Quadtree_mesher_2, boundary_band_is_wider_where_the_boundary_turns)
 {
   using P2d = QM::internal::Point_2d;
@@ -634,11 +634,13 @@ TEST(Quadtree_mesher_2, boundary_band_is_wider_where_the_boundary_turns)
   EXPECT_EQ(Sizing::band_cells(rectangle, 4.0 - 2 * h, h), Sizing::turning_band); // 2 cells from a corner
   EXPECT_EQ(Sizing::band_cells(rectangle, 4.0 - 4 * h, h), Sizing::straight_band); // 4 cells from it
   EXPECT_EQ(Sizing::band_cells(rectangle, 0.5 * h, h), Sizing::turning_band); // past the loop's start
-  // a 64-gon (5.625° a vertex, sides of 0.098): gentle within 3 cells of 1/16, not of 1/4
+  // a 64-gon (5.625° a vertex, sides of 0.098): gentle within 3 cells of 1/16 and 1/8 (8
+  // vertices, 45°: a band of 3 cells there while the limit was 40°), not of 1/4
   std::vector<P2d> circle;
   for(int k = 0; k < 64; ++k) circle.emplace_back(std::cos(k * CGAL_PI / 32), std::sin(k * CGAL_PI / 32));
   const QM::internal::Loop_turning turning(circle);
   EXPECT_EQ(Sizing::band_cells(turning, 1.0, 1.0 / 16), Sizing::straight_band);
+  EXPECT_EQ(Sizing::band_cells(turning, 1.0, 1.0 / 8), Sizing::straight_band); // 45° within 3 cells
   EXPECT_EQ(Sizing::band_cells(turning, 1.0, 1.0 / 4), Sizing::turning_band);
 }
 

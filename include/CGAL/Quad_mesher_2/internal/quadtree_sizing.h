@@ -474,7 +474,7 @@ public:
     return turning.within(s, turning_band * h) > band_turn_limit ? turning_band : straight_band;
   }
   static constexpr int straight_band = 1, turning_band = 3;
-  static constexpr double band_turn_limit = 40;
+  static constexpr double band_turn_limit = 50;
 
 private:
   // a domain's features and isolated points, sorted (as m_xy holds them)
