@@ -23,17 +23,15 @@ import os
 import meshio
 import numpy as np
 
+import transform_sweep  # beside this script: its .poly reader
+
 
 def read_poly(path):
-    rows = [line.split('#')[0].split() for line in open(path)]
-    rows = [r for r in rows if r]
-    nv = int(rows[0][0])
-    points = np.array([[float(x) for x in r[1:3]] for r in rows[1:1 + nv]])
-    labels = [int(r[0]) for r in rows[1:1 + nv]]
-    index = {label: k for k, label in enumerate(labels)}
-    ns = int(rows[1 + nv][0])
-    segments = [(index[int(r[1])], index[int(r[2])]) for r in rows[2 + nv:2 + nv + ns]]
-    return points, segments
+    """the input's points (an array) and its segments (pairs of indices into it)"""
+    _, vertices, _, segments, _ = transform_sweep.read_poly(path)
+    index = {label: k for k, (label, _, _, _) in enumerate(vertices)}
+    return (np.array([[x, y] for _, x, y, _ in vertices]),
+            [(index[r[1]], index[r[2]]) for r in segments])
 
 
 def sharp_input_vertices(points, segments):
