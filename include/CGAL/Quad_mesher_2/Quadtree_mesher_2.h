@@ -296,8 +296,10 @@ public:
   /// and their markers, and its `regions`; with `Stage::SMOOTHING` it is smoothed first
   /// (`smooth_mesh()`), and where the smoothed mesh keeps a sliver, a quad more than
   /// `max_sliver_ratio` times longer than wide that no input forces, the stages run again
-  /// (`sliver_round_budget` rounds) with the quadtree refined at each sliver; the new mesh is
-  /// kept if it has fewer slivers and no more quads with an unforced angle out.
+  /// with the quadtree refined at each sliver; the new mesh is kept if it has fewer slivers,
+  /// no more quads with an unforced angle out and no quad with a larger aspect ratio than the
+  /// first mesh's largest, and if not, they run once more refined at the longest sliver alone
+  /// (`sliver_tries`, each of `sliver_round_budget` rounds).
   Mesh run(Stage last)
   {
     Mesh mesh = run_rounds(last);
@@ -352,9 +354,12 @@ public:
   static constexpr int max_refinement_rounds = 16;
   /// the aspect ratio (longest over shortest edge) above which a quad of the smoothed mesh is
   /// a sliver that `run()` refines (see there)
-  static constexpr double max_sliver_ratio = 10.0;
-  /// the rounds `run()` runs again for slivers: one, whose mesh must not add angles out
+  static constexpr double max_sliver_ratio = 5.0;
+  /// the rounds `run()` runs again for slivers in each try: one, whose mesh must not add
+  /// angles out
   static constexpr int sliver_round_budget = 1;
+  /// the tries `run()` makes for slivers: at every sliver, then at the longest alone
+  static constexpr int sliver_tries = 2;
   /// valid rounds refined for angles that did not lower their count, at most
   static constexpr int max_stalled_angle_rounds = 3;
 
@@ -538,36 +543,61 @@ private:
   // Not in the paper: a smoothed mesh may keep a sliver, a quad over `max_sliver_ratio` times
   // longer than wide that no input forces (none of its corners is an input corner under 45
   // degrees, and its shortest edge does not join two input vertices). The rounds run again
-  // with the quadtree refined at each, and the new mesh is kept if it has fewer.
+  // with the quadtree refined at each, and the new mesh is kept if it has fewer, no more
+  // quads with an unforced angle out, and no longer quad anywhere (but for rounding: the
+  // smoothing moves a forced quad's nodes by a few ulps): refined cells can move a forced
+  // quad's nodes too, and that quad may come out longer than the slivers were. If it
+  // is not kept, they run once more refined at the longest sliver alone: the more places a
+  // round refines, the more of the buffer it changes, and the likelier it puts an angle out.
   Mesh refine_slivers(Mesh mesh, Stage last)
   {
-    const std::vector<internal::Refinement_request> requests = sliver_requests(mesh);
-    if(requests.empty() || m_refinement_queue.add(*m_tree, requests) == 0)
+    const std::vector<Sliver> found = slivers(mesh);
+    if(found.empty())
       return mesh;
+    const double longest = worst_aspect_ratio(mesh);
+    const internal::Refinement_queue queue = m_refinement_queue;
     const std::size_t smoothing_moves = m_smoothing_moves, vertex_splits = m_vertex_splits;
     const Rounds rounds = m_rounds;
     Round_state kept = save_round(std::move(mesh));
-    m_earlier_rounds = rounds.round();
-    try {
-      Mesh again = run_rounds(last, true);
-      smooth_mesh(again);
-      if(sliver_requests(again).size() < requests.size()
-         && m_buffer_report.bad_angle_quads <= kept.buffer_report.bad_angle_quads)
-        return again;
-    } catch(const Meshing_error&) {
-      // refined, the rounds found no valid mesh: the first one stands
+    int sliver_rounds = 0; // the rounds the tries below ran: the figures count them
+    for(int attempt = 0; attempt < sliver_tries && (attempt == 0 || found.size() > 1); ++attempt) {
+      std::vector<internal::Refinement_request> requests;
+      for(std::size_t k = 0; k < (attempt == 0 ? found.size() : 1); ++k) requests.push_back(found[k].request);
+      m_refinement_queue = queue;
+      if(m_refinement_queue.add(*kept.tree, requests) == 0)
+        break; // finer cells are refused at every sliver, the longest too
+      m_earlier_rounds = rounds.round() + sliver_rounds;
+      try {
+        Mesh again = run_rounds(last, true);
+        smooth_mesh(again);
+        sliver_rounds += m_rounds.round();
+        if(slivers(again).size() < found.size() && m_buffer_report.bad_angle_quads <= kept.buffer_report.bad_angle_quads
+           && worst_aspect_ratio(again) <= longest * (1 + 1e-9))
+          return again;
+      } catch(const Meshing_error&) {
+        sliver_rounds += m_rounds.round(); // refined, the rounds found no valid mesh
+      }
     }
-    // the first mesh and its state; the rounds, their figures and the timings count both
+    // the first mesh and its state; the rounds, their figures and the timings count all
     m_smoothing_moves = smoothing_moves;
     m_vertex_splits = vertex_splits;
-    m_earlier_rounds = m_rounds.round();
+    m_earlier_rounds = sliver_rounds;
     m_rounds = rounds;
+    m_refinement_queue = queue;
     return restore_round(std::move(kept));
   }
 
-  // a refinement request at each sliver (see refine_slivers()), of its longest edge's size or
-  // the side of the leaf at its centre, whichever is smaller: one level finer there, at least
-  std::vector<internal::Refinement_request> sliver_requests(const Mesh& mesh) const
+  // a sliver of a mesh (see refine_slivers()) and its refinement request: of its longest
+  // edge's size or the side of the leaf at its centre, whichever is smaller, one level finer
+  // there at least
+  struct Sliver
+  {
+    double aspect_ratio;
+    internal::Refinement_request request;
+  };
+
+  // the slivers of `mesh`, longest first
+  std::vector<Sliver> slivers(const Mesh& mesh) const
   {
     std::vector<std::size_t> long_quads; // over the ratio: slivers unless the input forces them
     for(std::size_t q = 0; q < mesh.quads.size(); ++q)
@@ -577,7 +607,7 @@ private:
     std::vector<internal::Point_2d> xy;
     for(const Point_2& p : mesh.points) xy.push_back(internal::to_point_2d(p));
     const std::vector<double> angle = input_corner_angles(xy);
-    std::vector<internal::Refinement_request> requests;
+    std::vector<Sliver> found;
     for(std::size_t q : long_quads) {
       const auto& Q = mesh.quads[q];
       const std::array<internal::Point_2d, 4> c = corners(mesh, q);
@@ -591,9 +621,21 @@ private:
       // would ask for the cells it came from
       const Point_2 at(centre.x(), centre.y());
       const double cell = m_tree->contains(at) ? m_tree->cell_side(m_tree->locate(at).level) : HUGE_VAL;
-      requests.emplace_back(centre, (std::min)(cell, *std::max_element(len.begin(), len.end())));
+      found.push_back({ internal::quad_aspect_ratio(c),
+                        { centre, (std::min)(cell, *std::max_element(len.begin(), len.end())) } });
     }
-    return requests;
+    std::stable_sort(found.begin(), found.end(),
+                     [](const Sliver& a, const Sliver& b) { return a.aspect_ratio > b.aspect_ratio; });
+    return found;
+  }
+
+  // the largest aspect ratio of the mesh's quads, forced or not
+  static double worst_aspect_ratio(const Mesh& mesh)
+  {
+    double worst = 0;
+    for(std::size_t q = 0; q < mesh.quads.size(); ++q)
+      worst = (std::max)(worst, internal::quad_aspect_ratio(corners(mesh, q)));
+    return worst;
   }
 
   static std::array<internal::Point_2d, 4> corners(const Mesh& mesh, std::size_t q)
