@@ -506,10 +506,12 @@ TEST(Mesh_smoothing, leaves_no_sliver_at_close_corners_or_in_a_thin_rectangle)
 // Random stars whose smoothed meshes kept a sliver (aspect ratio 14.3 and 13.9 beside a
 // corner, with every angle in [48, 135]; star 112: 8.08, under the sliver ratio when it was
 // 10): the rounds run again with the quadtree refined there (Quadtree_mesher_2::
-// refine_slivers(); measured 4.9, 4.4 and 4.8).
+// refine_slivers(); measured 4.9, 4.4 and 4.8). Star 146 (5.22): the sliver round's first
+// round mends it and puts an angle out, its second round mends that (4.27; with one round a
+// try, no try was kept).
 TEST(Mesh_smoothing, a_sliver_it_leaves_is_refined_away)
 {
-  for(const char* file : { "star_sliver_59.poly", "star_sliver_92.poly", "star_sliver_112.poly" }) {
+  for(const char* file : { "star_sliver_59.poly", "star_sliver_92.poly", "star_sliver_112.poly", "star_sliver_146.poly" }) {
     const QM::Domain_2<K> d = smoothing_test_data(file);
     ASSERT_FALSE(d.points.empty()) << file;
     QM::Quadtree_mesher_2<K> mesher(d);
@@ -570,20 +572,20 @@ TEST(Mesh_smoothing, a_sliver_round_that_lengthens_the_longest_quad_is_not_kept)
   EXPECT_LT(q.max_aspect_ratio, 80.0);
 }
 
-// A random far field with 4 slivers (aspect ratios up to 12.8, every angle in [45, 135]): the
-// round refined at all four mended three and put an angle out, and is not kept; the round
-// refined at the longest alone mends all four (quads over 5 with every angle in [45, 135]:
-// 3 with the first mesh, 0). The quads over 5 left have an angle under 45: at the input's
+// A random far field with 3 slivers (aspect ratios 7.68, 7.1 and 5.65, every angle in
+// [45, 135]): the round refined at all three left 4 and is not kept; the round refined at the
+// longest alone leaves 1 (5.65). The other quads over 5 have an angle under 45: at the input's
 // sharp corners.
-TEST(Mesh_smoothing, a_sliver_round_that_puts_an_angle_out_is_tried_at_the_longest_sliver_alone)
+TEST(Mesh_smoothing, a_sliver_round_that_leaves_more_slivers_is_tried_at_the_longest_sliver_alone)
 {
-  const QM::Domain_2<K> d = smoothing_test_data("random_farfield_twoopt_21_25.poly");
+  const QM::Domain_2<K> d = smoothing_test_data("random_farfield_twoopt_28_7.poly");
   ASSERT_FALSE(d.points.empty());
   QM::Quadtree_mesher_2<K> mesher(d);
   const Mesh m = mesher.run();
   EXPECT_TRUE(QM::compute_quality(m).is_valid());
   EXPECT_EQ(mesher.buffer_report().bad_angle_quads, 0u);
   std::size_t long_quads = 0;
+  double longest = 0;
   for(std::size_t q = 0; q < m.quads.size(); ++q) {
     std::array<P2d, 4> c;
     double smallest = 180;
@@ -591,9 +593,14 @@ TEST(Mesh_smoothing, a_sliver_round_that_puts_an_angle_out_is_tried_at_the_longe
       c[k] = QM::internal::to_point_2d(m.points[m.quads[q][k]]);
       smallest = (std::min)(smallest, qm2_checks::corner_angle(m, q, k));
     }
-    if(QM::internal::quad_aspect_ratio(c) > 5 && smallest >= 45 - 1e-7) ++long_quads;
+    const double ratio = QM::internal::quad_aspect_ratio(c);
+    if(ratio > 5 && smallest >= 45 - 1e-7) {
+      ++long_quads;
+      longest = (std::max)(longest, ratio);
+    }
   }
-  EXPECT_EQ(long_quads, 0u);
+  EXPECT_LE(long_quads, 1u);
+  EXPECT_LT(longest, 6.0);
 }
 
 // Lake Superior (the paper's case, bundled): the bulk the stage is for, as assertions on its

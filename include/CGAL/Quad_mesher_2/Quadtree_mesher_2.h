@@ -297,8 +297,8 @@ public:
   /// (`smooth_mesh()`), and where the smoothed mesh keeps a sliver, a quad more than
   /// `max_sliver_ratio` times longer than wide that no input forces, the stages run again
   /// with the quadtree refined at each sliver; the new mesh is kept if it has fewer slivers,
-  /// no more quads with an unforced angle out and no quad with a larger aspect ratio than the
-  /// first mesh's largest, and if not, they run once more refined at the longest sliver alone
+  /// no more quads with an unforced angle out and no quad with an aspect ratio over 1% above
+  /// the first mesh's largest, and if not, they run once more refined at the longest sliver alone
   /// (`sliver_tries`, each of `sliver_round_budget` rounds).
   Mesh run(Stage last)
   {
@@ -355,9 +355,10 @@ public:
   /// the aspect ratio (longest over shortest edge) above which a quad of the smoothed mesh is
   /// a sliver that `run()` refines (see there)
   static constexpr double max_sliver_ratio = 5.0;
-  /// the rounds `run()` runs again for slivers in each try: one, whose mesh must not add
-  /// angles out
-  static constexpr int sliver_round_budget = 1;
+  /// the rounds `run()` runs again for slivers in each try: two, the second refined where
+  /// the first put an angle out or left an invalid quad (the try's mesh must not add angles
+  /// out)
+  static constexpr int sliver_round_budget = 2;
   /// the tries `run()` makes for slivers: at every sliver, then at the longest alone
   static constexpr int sliver_tries = 2;
   /// valid rounds refined for angles that did not lower their count, at most
@@ -544,9 +545,9 @@ private:
   // longer than wide that no input forces (none of its corners is an input corner under 45
   // degrees, and its shortest edge does not join two input vertices). The rounds run again
   // with the quadtree refined at each, and the new mesh is kept if it has fewer, no more
-  // quads with an unforced angle out, and no longer quad anywhere (but for rounding: the
-  // smoothing moves a forced quad's nodes by a few ulps): refined cells can move a forced
-  // quad's nodes too, and that quad may come out longer than the slivers were. If it
+  // quads with an unforced angle out, and no quad over 1% longer than the first mesh's
+  // longest: refined cells move a forced quad's nodes too, most often a little, which the 1%
+  // allows, and sometimes much, lengthening it more than the slivers were long. If it
   // is not kept, they run once more refined at the longest sliver alone: the more places a
   // round refines, the more of the buffer it changes, and the likelier it puts an angle out.
   Mesh refine_slivers(Mesh mesh, Stage last)
@@ -560,11 +561,16 @@ private:
     const Rounds rounds = m_rounds;
     Round_state kept = save_round(std::move(mesh));
     int sliver_rounds = 0; // the rounds the tries below ran: the figures count them
-    for(int attempt = 0; attempt < sliver_tries && (attempt == 0 || found.size() > 1); ++attempt) {
+    std::size_t queued = 0;
+    for(int attempt = 0; attempt < sliver_tries; ++attempt) {
+      // a first try that queued one request queued the longest sliver's, or refused it
+      if(attempt > 0 && queued <= 1)
+        break;
       std::vector<internal::Refinement_request> requests;
       for(std::size_t k = 0; k < (attempt == 0 ? found.size() : 1); ++k) requests.push_back(found[k].request);
       m_refinement_queue = queue;
-      if(m_refinement_queue.add(*kept.tree, requests) == 0)
+      queued = m_refinement_queue.add(*kept.tree, requests);
+      if(queued == 0)
         break; // finer cells are refused at every sliver, the longest too
       m_earlier_rounds = rounds.round() + sliver_rounds;
       try {
@@ -572,7 +578,7 @@ private:
         smooth_mesh(again);
         sliver_rounds += m_rounds.round();
         if(slivers(again).size() < found.size() && m_buffer_report.bad_angle_quads <= kept.buffer_report.bad_angle_quads
-           && worst_aspect_ratio(again) <= longest * (1 + 1e-9))
+           && worst_aspect_ratio(again) <= longest * 1.01)
           return again;
       } catch(const Meshing_error&) {
         sliver_rounds += m_rounds.round(); // refined, the rounds found no valid mesh
