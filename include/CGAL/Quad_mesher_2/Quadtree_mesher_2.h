@@ -297,9 +297,9 @@ public:
   /// (`smooth_mesh()`), and where the smoothed mesh keeps a sliver, a quad more than
   /// `max_sliver_ratio` times longer than wide that no input forces, the stages run again
   /// with the quadtree refined at each sliver; the new mesh is kept if it has fewer slivers,
-  /// no more quads with an unforced angle out and no quad with an aspect ratio over 1% above
-  /// the first mesh's largest, and if not, they run once more refined at the longest sliver alone
-  /// (`sliver_tries`, each of `sliver_round_budget` rounds).
+  /// no more quads with an unforced angle out and no quad with an aspect ratio above the first
+  /// mesh's largest (by `sliver_try_length_slack`), and if not, they run once more refined at
+  /// the longest sliver alone (`sliver_tries`, each of `sliver_round_budget` rounds).
   Mesh run(Stage last)
   {
     Mesh mesh = run_rounds(last);
@@ -361,6 +361,8 @@ public:
   static constexpr int sliver_round_budget = 2;
   /// the tries `run()` makes for slivers: at every sliver, then at the longest alone
   static constexpr int sliver_tries = 2;
+  /// how much longer than the first mesh's longest quad a sliver try's may come out, relative
+  static constexpr double sliver_try_length_slack = 0.01;
   /// valid rounds refined for angles that did not lower their count, at most
   static constexpr int max_stalled_angle_rounds = 3;
 
@@ -545,11 +547,12 @@ private:
   // longer than wide that no input forces (none of its corners is an input corner under 45
   // degrees, and its shortest edge does not join two input vertices). The rounds run again
   // with the quadtree refined at each, and the new mesh is kept if it has fewer, no more
-  // quads with an unforced angle out, and no quad over 1% longer than the first mesh's
-  // longest: refined cells move a forced quad's nodes too, most often a little, which the 1%
-  // allows, and sometimes much, lengthening it more than the slivers were long. If it
-  // is not kept, they run once more refined at the longest sliver alone: the more places a
-  // round refines, the more of the buffer it changes, and the likelier it puts an angle out.
+  // quads with an unforced angle out, and no quad longer than the first mesh's longest (by
+  // `sliver_try_length_slack`): refined cells move a forced quad's nodes too, most often a
+  // little, which the slack allows, and sometimes much, lengthening it more than the slivers
+  // were long. If it is not kept, they run once more refined at the longest sliver alone:
+  // the more places a round refines, the more of the buffer it changes, and the likelier it
+  // puts an angle out.
   Mesh refine_slivers(Mesh mesh, Stage last)
   {
     const std::vector<Sliver> found = slivers(mesh);
@@ -578,7 +581,7 @@ private:
         smooth_mesh(again);
         sliver_rounds += m_rounds.round();
         if(slivers(again).size() < found.size() && m_buffer_report.bad_angle_quads <= kept.buffer_report.bad_angle_quads
-           && worst_aspect_ratio(again) <= longest * 1.01)
+           && worst_aspect_ratio(again) <= longest * (1 + sliver_try_length_slack))
           return again;
       } catch(const Meshing_error&) {
         sliver_rounds += m_rounds.round(); // refined, the rounds found no valid mesh
