@@ -555,10 +555,10 @@ private:
   // puts an angle out.
   Mesh refine_slivers(Mesh mesh, Stage last)
   {
-    const std::vector<Sliver> found = slivers(mesh);
+    const Sliver_census first = sliver_census(mesh);
+    const std::vector<Sliver>& found = first.slivers;
     if(found.empty())
       return mesh;
-    const double longest = worst_aspect_ratio(mesh);
     const internal::Refinement_queue queue = m_refinement_queue;
     const std::size_t smoothing_moves = m_smoothing_moves, vertex_splits = m_vertex_splits;
     const Rounds rounds = m_rounds;
@@ -580,8 +580,9 @@ private:
         Mesh again = run_rounds(last, true);
         smooth_mesh(again);
         sliver_rounds += m_rounds.round();
-        if(slivers(again).size() < found.size() && m_buffer_report.bad_angle_quads <= kept.buffer_report.bad_angle_quads
-           && worst_aspect_ratio(again) <= longest * (1 + sliver_try_length_slack))
+        const Sliver_census after = sliver_census(again);
+        if(after.slivers.size() < found.size() && m_buffer_report.bad_angle_quads <= kept.buffer_report.bad_angle_quads
+           && after.longest <= first.longest * (1 + sliver_try_length_slack))
           return again;
       } catch(const Meshing_error&) {
         sliver_rounds += m_rounds.round(); // refined, the rounds found no valid mesh
@@ -605,19 +606,30 @@ private:
     internal::Refinement_request request;
   };
 
-  // the slivers of `mesh`, longest first
-  std::vector<Sliver> slivers(const Mesh& mesh) const
+  // the slivers of a mesh, longest first, and the largest aspect ratio of its quads, forced
+  // or not
+  struct Sliver_census
   {
-    std::vector<std::size_t> long_quads; // over the ratio: slivers unless the input forces them
-    for(std::size_t q = 0; q < mesh.quads.size(); ++q)
-      if(internal::quad_aspect_ratio(corners(mesh, q)) > max_sliver_ratio) long_quads.push_back(q);
+    std::vector<Sliver> slivers;
+    double longest = 0;
+  };
+
+  Sliver_census sliver_census(const Mesh& mesh) const
+  {
+    Sliver_census census;
+    std::vector<std::pair<std::size_t, double>> long_quads; // over the ratio: slivers unless the input forces them
+    for(std::size_t q = 0; q < mesh.quads.size(); ++q) {
+      const double ratio = internal::quad_aspect_ratio(corners(mesh, q));
+      census.longest = (std::max)(census.longest, ratio);
+      if(ratio > max_sliver_ratio) long_quads.emplace_back(q, ratio);
+    }
     if(long_quads.empty())
-      return {};
+      return census;
     std::vector<internal::Point_2d> xy;
     for(const Point_2& p : mesh.points) xy.push_back(internal::to_point_2d(p));
     const std::vector<double> angle = input_corner_angles(xy);
-    std::vector<Sliver> found;
-    for(std::size_t q : long_quads) {
+    std::vector<Sliver>& found = census.slivers;
+    for(const auto& [q, ratio] : long_quads) {
       const auto& Q = mesh.quads[q];
       const std::array<internal::Point_2d, 4> c = corners(mesh, q);
       const std::array<double, 4> len = internal::quad_edge_lengths(c);
@@ -630,21 +642,11 @@ private:
       // would ask for the cells it came from
       const Point_2 at(centre.x(), centre.y());
       const double cell = m_tree->contains(at) ? m_tree->cell_side(m_tree->locate(at).level) : HUGE_VAL;
-      found.push_back({ internal::quad_aspect_ratio(c),
-                        { centre, (std::min)(cell, *std::max_element(len.begin(), len.end())) } });
+      found.push_back({ ratio, { centre, (std::min)(cell, *std::max_element(len.begin(), len.end())) } });
     }
     std::stable_sort(found.begin(), found.end(),
                      [](const Sliver& a, const Sliver& b) { return a.aspect_ratio > b.aspect_ratio; });
-    return found;
-  }
-
-  // the largest aspect ratio of the mesh's quads, forced or not
-  static double worst_aspect_ratio(const Mesh& mesh)
-  {
-    double worst = 0;
-    for(std::size_t q = 0; q < mesh.quads.size(); ++q)
-      worst = (std::max)(worst, internal::quad_aspect_ratio(corners(mesh, q)));
-    return worst;
+    return census;
   }
 
   static std::array<internal::Point_2d, 4> corners(const Mesh& mesh, std::size_t q)
