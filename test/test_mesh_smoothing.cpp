@@ -484,6 +484,33 @@ TEST(Vertex_splits, leaves_a_grid_and_a_pinned_vertex)
   EXPECT_EQ(QM::internal::Vertex_splits(xy, quads, pinned, 1e-6).split_all(), 0u);
 }
 
+// The splits end where a sweep over every vertex splits none: the sweeps after the first
+// try only the vertices near a split (a fresh object tries them all). On smoothed meshes, as
+// the stage has them.
+TEST(Vertex_splits, end_where_a_sweep_over_every_vertex_splits_none)
+{
+  std::mt19937 random(29);
+  std::size_t splits = 0;
+  for(int k = 0; k < 8; ++k) {
+    const std::vector<Point_2> outer = random_star(random, 8 + int(random() % 30), 0.5);
+    const QM::Domain_2<K> d = qm2_test::polygons({ outer });
+    Mesh buffer2;
+    ASSERT_NO_THROW(buffer2 = QM::Quadtree_mesher_2<K>(d).run(QM::Stage::BUFFER2)) << "random star " << k;
+    std::vector<P2d> xy;
+    for(const Point_2& p : buffer2.points) xy.push_back(QM::internal::to_point_2d(p));
+    std::vector<QM::internal::Quad_vertices> quads = buffer2.quads;
+    std::vector<char> pinned(xy.size(), 0);
+    for(const Point_2& p : d.points)
+      for(std::size_t v = 0; v < xy.size(); ++v) pinned[v] = pinned[v] || buffer2.points[v] == p;
+    const double min_edge = 1e-7 * box_diagonal(d);
+    QM::internal::Mesh_smoothing(xy, quads, pinned, min_edge).smooth(4); // as the stage does first
+    splits += QM::internal::Vertex_splits(xy, quads, pinned, min_edge).split_all();
+    pinned.resize(xy.size(), 0);
+    EXPECT_EQ(QM::internal::Vertex_splits(xy, quads, pinned, min_edge).split_all(), 0u) << "random star " << k;
+  }
+  EXPECT_GT(splits, 20u); // the sweeps had splits to make
+}
+
 // No slivers where two input corners are 1e-5 apart (a step in a unit square's top side: the
 // cells refine to the step, and the smoothing lengthens what the buffer left short; measured
 // 3.0, 5.8 before it), nor in a rectangle 1 by 0.01 (measured 2.6).

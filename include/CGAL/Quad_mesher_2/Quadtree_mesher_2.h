@@ -578,11 +578,13 @@ private:
       m_earlier_rounds = rounds.round() + sliver_rounds;
       try {
         Mesh again = run_rounds(last, true);
-        smooth_mesh(again);
         sliver_rounds += m_rounds.round();
+        // more quads with an angle out: not kept, whatever the smoothing would make of it
+        if(m_buffer_report.bad_angle_quads > kept.buffer_report.bad_angle_quads)
+          continue;
+        smooth_mesh(again);
         const Sliver_census after = sliver_census(again);
-        if(after.slivers.size() < found.size() && m_buffer_report.bad_angle_quads <= kept.buffer_report.bad_angle_quads
-           && after.longest <= first.longest * (1 + sliver_try_length_slack))
+        if(after.slivers.size() < found.size() && after.longest <= first.longest * (1 + sliver_try_length_slack))
           return again;
       } catch(const Meshing_error&) {
         sliver_rounds += m_rounds.round(); // refined, the rounds found no valid mesh

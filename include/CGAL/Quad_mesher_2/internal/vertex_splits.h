@@ -54,22 +54,54 @@ public:
 
   /// Splits vertices, in sweeps over them, while a sweep splits any (each split lowers the
   /// sum of `valence_cost()`, so they end); new vertices are appended to `xy` and new quads
-  /// to `quads`. Returns how many splits were made.
+  /// to `quads`. Returns how many splits were made. A sweep tries a vertex again only if a
+  /// split came near it since its last try: elsewhere the try would fail again.
   std::size_t split_all()
   {
     std::size_t splits = 0;
+    std::vector<char> to_try(m_xy.size(), 1);
     for(bool again = true; again;) {
       again = false;
-      for(std::size_t v = 0; v < m_xy.size(); ++v)
+      for(std::size_t v = 0; v < m_xy.size(); ++v) {
+        if(to_try[v] == 0) continue;
+        to_try[v] = 0;
         if(try_split(v)) {
           ++splits;
           again = true;
+          mark_near_split(v, to_try);
         }
+      }
     }
     return splits;
   }
 
 private:
+  // try_split(w) reads the positions and quads within three rings of w (the ring of its
+  // neighbours' quads and the folds at their corners); a split at v moves v and its
+  // neighbours and changes the quads at v and at the new vertex, the last one: the outcome
+  // may change within four rings of those two
+  void mark_near_split(std::size_t v, std::vector<char>& to_try)
+  {
+    to_try.resize(m_xy.size(), 1);
+    m_seen.resize(m_xy.size(), 0);
+    ++m_stamp;
+    std::vector<std::size_t> ring{ v, m_xy.size() - 1 }, next;
+    for(std::size_t w : ring) m_seen[w] = m_stamp;
+    for(int step = 0; step < 4; ++step) {
+      next.clear();
+      for(std::size_t w : ring)
+        for(std::size_t q : m_quads_at[w])
+          for(std::size_t u : m_quads[q])
+            if(m_seen[u] != m_stamp) {
+              m_seen[u] = m_stamp;
+              next.push_back(u);
+            }
+      for(std::size_t w : ring) to_try[w] = 1;
+      ring.swap(next);
+    }
+    for(std::size_t w : ring) to_try[w] = 1;
+  }
+
   // The angles outside [60, 120] at an interior vertex of k quads after smoothing, on average
   // over the shared cases: the sum over vertices is what a split must lower.
   static double valence_cost(std::size_t k)
@@ -302,6 +334,8 @@ private:
   std::vector<std::vector<std::size_t>> m_quads_at;
   std::vector<char> m_on_boundary; // by vertex, for those of the mesh as it came
   double m_min_edge2;
+  std::vector<std::size_t> m_seen; // by vertex, the stamp of the last mark_near_split() that reached it
+  std::size_t m_stamp = 0;
 };
 
 } // namespace internal
