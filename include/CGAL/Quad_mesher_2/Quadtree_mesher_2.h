@@ -355,10 +355,10 @@ public:
   /// the aspect ratio (longest over shortest edge) above which a quad of the smoothed mesh is
   /// a sliver that `run()` refines (see there)
   static constexpr double max_sliver_ratio = 5.0;
-  /// the rounds `run()` runs again for slivers in each try: two, the second refined where
-  /// the first put an angle out or left an invalid quad (the try's mesh must not add angles
-  /// out)
-  static constexpr int sliver_round_budget = 2;
+  /// the rounds `run()` runs again for slivers in each try: three, each next one refined
+  /// where the one before put an angle out or left an invalid quad, as long as the rounds'
+  /// rule goes on (the try's mesh must not add angles out)
+  static constexpr int sliver_round_budget = 3;
   /// the tries `run()` makes for slivers: at every sliver, then at the longest alone
   static constexpr int sliver_tries = 2;
   /// how much longer than the first mesh's longest quad a sliver try's may come out, relative
