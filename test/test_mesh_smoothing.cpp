@@ -403,6 +403,20 @@ QM::Domain_2<K> smoothing_test_data(const std::string& file)
   return d;
 }
 
+// A whole run on test/data/<file>: its domain, its mesher (which keeps a reference to the
+// domain) and the mesh. An input that cannot be read fails the test (smoothing_test_data())
+// and is not meshed.
+struct Whole_run
+{
+  explicit Whole_run(const std::string& file) : domain(smoothing_test_data(file)), mesher(domain)
+  {
+    if(!domain.points.empty()) mesh = mesher.run();
+  }
+  QM::Domain_2<K> domain;
+  QM::Quadtree_mesher_2<K> mesher;
+  Mesh mesh;
+};
+
 // The quality of a whole run's mesh, checked for what every whole run must give: valid, every
 // angle in [45, 135] (these inputs have no corner under 45 degrees), no quad out left.
 QM::Mesh_quality_2 expect_whole_run_within_45_135(const Mesh& m, const QM::Quadtree_mesher_2<K>& mesher,
@@ -539,16 +553,13 @@ TEST(Mesh_smoothing, leaves_no_sliver_at_close_corners_or_in_a_thin_rectangle)
 TEST(Mesh_smoothing, a_sliver_it_leaves_is_refined_away)
 {
   for(const char* file : { "star_sliver_59.poly", "star_sliver_92.poly", "star_sliver_112.poly", "star_sliver_146.poly" }) {
-    const QM::Domain_2<K> d = smoothing_test_data(file);
-    ASSERT_FALSE(d.points.empty()) << file;
-    QM::Quadtree_mesher_2<K> mesher(d);
-    const Mesh m = mesher.run();
-    EXPECT_LE(expect_whole_run_within_45_135(m, mesher, file).max_aspect_ratio, 5.0) << file;
+    const Whole_run run(file);
+    EXPECT_LE(expect_whole_run_within_45_135(run.mesh, run.mesher, file).max_aspect_ratio, 5.0) << file;
     // Star 92's kept mesh is the sliver round's, which recalls the moves of the rounds before
     // (2246 moves recalled, 445 searched). Star 59's smoothing leaves no sliver since the
     // vertices of three quads take their Fermat points (4.9, 14.3 before): no round to recall.
     if(std::string(file) == "star_sliver_92.poly") {
-      EXPECT_GT(2 * mesher.buffer_report().moves_recalled, mesher.buffer_report().moves_searched) << file;
+      EXPECT_GT(2 * run.mesher.buffer_report().moves_recalled, run.mesher.buffer_report().moves_searched) << file;
     }
   }
 }
@@ -559,14 +570,11 @@ TEST(Mesh_smoothing, a_sliver_it_leaves_is_refined_away)
 // the poor quad too, two rounds and 1125 quads.
 TEST(Mesh_smoothing, a_poor_quad_at_a_corner_is_refined_under_itself)
 {
-  const QM::Domain_2<K> d = smoothing_test_data("star_corner_pocket_104.poly");
-  ASSERT_FALSE(d.points.empty());
-  QM::Quadtree_mesher_2<K> mesher(d);
-  const Mesh m = mesher.run();
-  expect_whole_run_within_45_135(m, mesher, "star_corner_pocket_104.poly");
-  EXPECT_LE(mesher.rounds(), 2);
-  EXPECT_LE(mesher.quadtree().depth(), 7);
-  EXPECT_LT(m.quads.size(), 1150u);
+  const Whole_run run("star_corner_pocket_104.poly");
+  expect_whole_run_within_45_135(run.mesh, run.mesher, "star_corner_pocket_104.poly");
+  EXPECT_LE(run.mesher.rounds(), 2);
+  EXPECT_LE(run.mesher.quadtree().depth(), 7);
+  EXPECT_LT(run.mesh.quads.size(), 1150u);
 }
 
 // A synthetic far field, a jagged polygon around an ellipse hole: one fan quad of the buffer
@@ -576,11 +584,8 @@ TEST(Mesh_smoothing, a_poor_quad_at_a_corner_is_refined_under_itself)
 // than the cells at the sliver, it meshes the side with quads of aspect ratio 4.1 at most.
 TEST(Mesh_smoothing, a_sliver_longer_than_its_cells_is_refined_away)
 {
-  const QM::Domain_2<K> d = smoothing_test_data("sliver_jagged_far_field.poly");
-  ASSERT_FALSE(d.points.empty());
-  QM::Quadtree_mesher_2<K> mesher(d);
-  const Mesh m = mesher.run();
-  const QM::Mesh_quality_2 q = expect_whole_run_within_45_135(m, mesher, "sliver_jagged_far_field.poly");
+  const Whole_run run("sliver_jagged_far_field.poly");
+  const QM::Mesh_quality_2 q = expect_whole_run_within_45_135(run.mesh, run.mesher, "sliver_jagged_far_field.poly");
   EXPECT_LE(q.max_aspect_ratio, 10.0);
 }
 
@@ -590,11 +595,8 @@ TEST(Mesh_smoothing, a_sliver_longer_than_its_cells_is_refined_away)
 // lengthen the mesh's longest quad, forced or not.
 TEST(Mesh_smoothing, a_sliver_round_that_lengthens_the_longest_quad_is_not_kept)
 {
-  const QM::Domain_2<K> d = smoothing_test_data("random_convex_11_32.poly");
-  ASSERT_FALSE(d.points.empty());
-  QM::Quadtree_mesher_2<K> mesher(d);
-  const Mesh m = mesher.run();
-  const QM::Mesh_quality_2 q = QM::compute_quality(m);
+  const Whole_run run("random_convex_11_32.poly");
+  const QM::Mesh_quality_2 q = QM::compute_quality(run.mesh);
   EXPECT_TRUE(q.is_valid());
   EXPECT_LT(q.max_aspect_ratio, 80.0);
 }
@@ -605,12 +607,10 @@ TEST(Mesh_smoothing, a_sliver_round_that_lengthens_the_longest_quad_is_not_kept)
 // sharp corners.
 TEST(Mesh_smoothing, a_sliver_round_that_leaves_more_slivers_is_tried_at_the_longest_sliver_alone)
 {
-  const QM::Domain_2<K> d = smoothing_test_data("random_farfield_twoopt_28_7.poly");
-  ASSERT_FALSE(d.points.empty());
-  QM::Quadtree_mesher_2<K> mesher(d);
-  const Mesh m = mesher.run();
+  const Whole_run run("random_farfield_twoopt_28_7.poly");
+  const Mesh& m = run.mesh;
   EXPECT_TRUE(QM::compute_quality(m).is_valid());
-  EXPECT_EQ(mesher.buffer_report().bad_angle_quads, 0u);
+  EXPECT_EQ(run.mesher.buffer_report().bad_angle_quads, 0u);
   std::size_t long_quads = 0;
   double longest = 0;
   for(std::size_t q = 0; q < m.quads.size(); ++q) {
@@ -637,13 +637,10 @@ TEST(Mesh_smoothing, a_sliver_round_that_leaves_more_slivers_is_tried_at_the_lon
 // try, both tries fail and the first mesh stays.
 TEST(Mesh_smoothing, a_sliver_try_may_take_a_third_round_to_put_no_angle_out)
 {
-  const QM::Domain_2<K> d = smoothing_test_data("lake_superior_turned127_x1.37.poly");
-  ASSERT_FALSE(d.points.empty());
-  QM::Quadtree_mesher_2<K> mesher(d);
-  const Mesh m = mesher.run();
-  const QM::Mesh_quality_2 q = QM::compute_quality(m);
+  const Whole_run run("lake_superior_turned127_x1.37.poly");
+  const QM::Mesh_quality_2 q = QM::compute_quality(run.mesh);
   EXPECT_TRUE(q.is_valid());
-  EXPECT_EQ(mesher.buffer_report().bad_angle_quads, 0u);
+  EXPECT_EQ(run.mesher.buffer_report().bad_angle_quads, 0u);
   EXPECT_LT(q.max_aspect_ratio, 8.0);
 }
 
