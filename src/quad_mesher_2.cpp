@@ -323,7 +323,8 @@ void add_buffer(const Options& opt, const Mesher& mesher, nlohmann::ordered_json
   report["buffer"]["rounds_end"] = rounds_end;
   if(b.bad_angle_quads > 0)
     std::cerr << "quad-mesher: " << opt.input << ": warning: " << b.bad_angle_quads
-              << " buffer quads have an angle outside [45, 135] that no input corner forces: " << why << "\n";
+              << " buffer quads have an angle outside [45, 135] that no input corner forces: " << why
+              << mesher.sharp_interface_corner_note() << "\n";
 }
 
 // the mesh's regions: tag, attribute (null where none) and quads of each

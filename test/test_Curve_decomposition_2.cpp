@@ -502,6 +502,24 @@ TEST(CurveDecomposition, DomainWithHole)
 
 // ---- errors -------------------------------------------------------------------------------
 
+// An interface (a loop with no hole point, given hole points elsewhere) is one curve: its
+// spline is decomposed once, and the result keeps it an interface.
+TEST(CurveDecomposition, AnInterfaceIsDecomposedOnce)
+{
+  Domain d;
+  add_loop(d, ellipse(12, 10, 10, true));
+  const std::vector<Point_2> inclusion = ellipse(8, 3, 3, false, 1, 0);
+  add_loop(d, inclusion);
+  add_loop(d, { Point_2(-7, -1), Point_2(-6, -1), Point_2(-6, 0), Point_2(-7, 0) });
+  d.holes.push_back(Point_2(-6.5, -0.5));
+  const Domain r = CGAL::Quad_mesher_2::decompose_domain_curves<K>(d, Options());
+  const CGAL::Quad_mesher_2::Domain_loops_2<K> loops = CGAL::Quad_mesher_2::extract_loops(r);
+  ASSERT_EQ(loops.loops.size(), 4u); // the outer loop, the interface and its twin, the hole
+  EXPECT_EQ(loops.loops[1].twin, 2u);
+  EXPECT_GT(loops.loops[1].vertices.size(), inclusion.size());
+  EXPECT_EQ(r.segments.size(), r.points.size());
+}
+
 TEST(CurveDecomposition, DegenerateInputsAreNamed)
 {
   const Options o;

@@ -287,16 +287,35 @@ TEST(Domain_loops_2, SquareWithSquareHoleWithHolePoint)
   EXPECT_EQ(CGAL::Quad_mesher_2::domain_area(d, loops), 12);
 }
 
-TEST(Domain_loops_2, HolePointsMakeUnmarkedInnerLoopsAnError)
+TEST(Domain_loops_2, with_hole_points_an_unmarked_inner_loop_is_an_interface_listed_twice)
 {
   // Triangle's rule: with hole points, only marked faces are holes. The second inner square
-  // has no hole point, so it would be an internal boundary.
+  // has no hole point: it bounds a region of its own, inside the land around it.
   Domain d;
   add_square(d, 0, 0, 10, 10);
   add_square(d, 1, 1, 3, 3);
   add_square(d, 5, 5, 7, 7);
   d.holes.push_back(Point_2(2, 2));
-  QM2_EXPECT_ERROR(d, "both sides", "vertex 8 (5, 5)", "hole point");
+  const Loops loops = extract_loops(d);
+  ASSERT_EQ(loops.loops.size(), 4u);
+  const std::size_t none = std::size_t(-1);
+  EXPECT_EQ(loops.loops[0].twin, none);
+  EXPECT_EQ(loops.loops[1].twin, none); // the hole
+  EXPECT_FALSE(loops.loops[1].is_outer);
+  // the interface: the outer loop of the inner region, then its twin, a hole of the land
+  EXPECT_TRUE(loops.loops[2].is_outer);
+  EXPECT_EQ(loops.loops[2].region, 1u);
+  EXPECT_EQ(loops.loops[2].vertices, (std::vector<std::size_t>{ 8, 9, 10, 11 }));
+  EXPECT_EQ(loops.loops[2].twin, 3u);
+  EXPECT_FALSE(loops.loops[3].is_outer);
+  EXPECT_EQ(loops.loops[3].region, 0u);
+  EXPECT_EQ(loops.loops[3].vertices, (std::vector<std::size_t>{ 8, 11, 10, 9 }));
+  EXPECT_EQ(loops.loops[3].twin, 2u);
+  EXPECT_EQ(loops.loops[2].depth, loops.loops[3].depth);
+  expect_domain_on_left(d, loops);
+  EXPECT_EQ(CGAL::Quad_mesher_2::domain_area(d, loops), 100 - 4);
+  EXPECT_EQ(CGAL::Quad_mesher_2::region_area(d, loops, 0), 100 - 4 - 4);
+  EXPECT_EQ(CGAL::Quad_mesher_2::region_area(d, loops, 1), 4);
 }
 
 TEST(Domain_loops_2, IslandInHole)
@@ -393,16 +412,27 @@ TEST(Domain_loops_2, HoleInIslandInHole)
   EXPECT_EQ(CGAL::Quad_mesher_2::domain_area(d, loops), 100 - 64 + 36 - 16);
 }
 
-TEST(Domain_loops_2, HolePointInIslandOnlyIsAnError)
+TEST(Domain_loops_2, a_hole_point_in_the_island_only_makes_the_loop_around_it_an_interface)
 {
   // With a hole point only inside the island, the ring between the hole loop and the island
-  // is domain, so the hole loop has the domain on both sides.
+  // is domain, so the hole loop has the domain on both sides: two regions meet there.
   Domain d;
   add_square(d, 0, 0, 10, 10);
   add_square(d, 2, 2, 8, 8);
   add_square(d, 4, 4, 6, 6);
   d.holes.push_back(Point_2(5, 5));
-  QM2_EXPECT_ERROR(d, "both sides", "vertex 4 (2, 2)");
+  const Loops loops = extract_loops(d);
+  ASSERT_EQ(loops.loops.size(), 4u);
+  EXPECT_EQ(loops.loops[1].twin, 2u);
+  EXPECT_EQ(loops.loops[2].twin, 1u);
+  EXPECT_TRUE(loops.loops[1].is_outer);
+  EXPECT_FALSE(loops.loops[2].is_outer);
+  EXPECT_FALSE(loops.loops[3].is_outer); // the island's loop bounds the hole
+  EXPECT_EQ(loops.loops[3].region, loops.loops[1].region);
+  EXPECT_EQ(loops.loops[2].region, loops.loops[0].region);
+  expect_domain_on_left(d, loops);
+  EXPECT_EQ(CGAL::Quad_mesher_2::region_area(d, loops, loops.loops[1].region), 36 - 4);
+  EXPECT_EQ(CGAL::Quad_mesher_2::region_area(d, loops, loops.loops[0].region), 100 - 36);
 }
 
 TEST(Domain_loops_2, HolePointsInsideAndAroundALoopIsAnError)

@@ -5,6 +5,7 @@
 // The mesher's first stage: sizing (paper §4.2), balance, templates, output.
 
 #include "qm2_mesh_checks.h"
+#include "qm2_test_domains.h"
 #include "qm2_test_kernel.h"
 
 #include <CGAL/Quad_mesher_2/IO/read_poly.h>
@@ -519,6 +520,164 @@ TEST(Quadtree_mesher_2, every_quad_carries_its_region)
   Criteria capped;
   capped.set_min_size(0.05);
   EXPECT_NO_THROW(QM::make_quad_mesh_2(d, capped));
+}
+
+// Every interface of `d` (a loop with the domain on both sides) is a chain of mesh edges from
+// vertex to vertex of the input, each edge with one quad on either side, in the region of
+// that side; and every quad in the region its centroid lies in (`region_of`).
+template <class Region_of>
+::testing::AssertionResult interfaces_are_edge_chains(const QM::Quad_mesh_2<K::Point_2>& mesh, const Domain& d,
+                                                      Region_of region_of)
+{
+  const QM::Domain_loops_2<K> loops = QM::extract_loops(d);
+  std::vector<std::pair<std::size_t, std::size_t>> boundary;
+  const ::testing::AssertionResult conforming = qm2_checks::is_conforming(mesh, &boundary);
+  if(!conforming) return conforming;
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> quad_of_edge; // directed, ccw in its quad
+  for(std::size_t q = 0; q < mesh.quads.size(); ++q)
+    for(int c = 0; c < 4; ++c) quad_of_edge[{ mesh.quads[q][c], mesh.quads[q][(c + 1) % 4] }] = q;
+  const double diagonal = std::sqrt(CGAL::to_double(CGAL::squared_distance(d.points.front(), d.points.back()))) + 1;
+  std::size_t interfaces = 0;
+  for(const auto& loop : loops.loops) {
+    if(loop.twin == std::size_t(-1) || !loop.is_outer) continue;
+    ++interfaces;
+    const auto& lv = loop.vertices;
+    for(std::size_t k = 0; k < lv.size(); ++k) {
+      const K::Point_2& a = d.points[lv[k]];
+      const K::Point_2& b = d.points[lv[(k + 1) % lv.size()]];
+      const K::Segment_2 ab(a, b);
+      std::vector<std::pair<double, std::size_t>> on; // along a -> b
+      for(std::size_t v = 0; v < mesh.points.size(); ++v)
+        if(CGAL::to_double(CGAL::squared_distance(ab, mesh.points[v])) <= 1e-20 * diagonal * diagonal)
+          on.emplace_back(CGAL::to_double(CGAL::squared_distance(a, mesh.points[v])), v);
+      std::sort(on.begin(), on.end());
+      if(on.size() < 2 || mesh.points[on.front().second] != a || mesh.points[on.back().second] != b)
+        return ::testing::AssertionFailure() << "segment " << k << " of an interface does not end at mesh vertices";
+      for(std::size_t j = 0; j + 1 < on.size(); ++j) {
+        const auto left = quad_of_edge.find({ on[j].second, on[j + 1].second });
+        const auto right = quad_of_edge.find({ on[j + 1].second, on[j].second });
+        if(left == quad_of_edge.end() || right == quad_of_edge.end())
+          return ::testing::AssertionFailure() << "segment " << k << " of an interface is not a chain of inner mesh edges";
+        if(mesh.quad_regions[left->second] != loop.region || mesh.quad_regions[right->second] != loops.loops[loop.twin].region)
+          return ::testing::AssertionFailure() << "the quads beside segment " << k << " of an interface are in the wrong regions";
+      }
+    }
+  }
+  if(interfaces == 0) return ::testing::AssertionFailure() << "no interface";
+  for(std::size_t q = 0; q < mesh.quads.size(); ++q)
+    if(mesh.quad_regions[q] != region_of(mesh, q))
+      return ::testing::AssertionFailure() << "quad " << q << " is in region " << mesh.quad_regions[q];
+  return ::testing::AssertionSuccess();
+}
+
+// the region of quad q: 1 if its centroid lies inside `inner`, else 0
+struct Inside_polygon
+{
+  std::vector<K::Point_2> inner;
+  std::size_t operator()(const QM::Quad_mesh_2<K::Point_2>& mesh, std::size_t q) const
+  {
+    const auto& v = mesh.quads[q];
+    const K::Point_2 centre = CGAL::centroid(mesh.points[v[0]], mesh.points[v[1]], mesh.points[v[2]], mesh.points[v[3]]);
+    return CGAL::bounded_side_2(inner.begin(), inner.end(), centre, K()) == CGAL::ON_BOUNDED_SIDE ? 1 : 0;
+  }
+};
+
+void expect_angles_within_45_135(const QM::Quad_mesh_2<K::Point_2>& mesh)
+{
+  const QM::Mesh_quality_2 quality = QM::compute_quality(mesh);
+  EXPECT_TRUE(quality.is_valid());
+  EXPECT_GE(quality.min_angle, 45.0 - 1e-7);
+  EXPECT_LE(quality.max_angle, 135.0 + 1e-7);
+}
+
+// Triangle's rule: with hole points, a loop with no hole point inside is an interface between
+// the region inside and the one around; both are meshed, sharing the nodes on it.
+TEST(Quadtree_mesher_2, an_inclusion_is_meshed_on_both_sides_sharing_its_nodes)
+{
+  for(const std::vector<K::Point_2>& inclusion :
+      { qm2_test::disc(5, 5, 3, 48), std::vector<K::Point_2>{ K::Point_2(3, 3), K::Point_2(7, 3.5), K::Point_2(4.5, 7) },
+        qm2_test::rectangle(4, 4, 6, 6) }) {
+    SCOPED_TRACE(inclusion.size());
+    const Domain d = qm2_test::polygons({ qm2_test::rectangle(0, 0, 10, 10), inclusion, qm2_test::rectangle(0.5, 0.5, 1.5, 1.5) },
+                                        { K::Point_2(1, 1) });
+    Mesher mesher(d);
+    const QM::Quad_mesh_2<K::Point_2> mesh = mesher.run();
+    ASSERT_EQ(mesh.regions.size(), 2u);
+    EXPECT_TRUE(interfaces_are_edge_chains(mesh, d, Inside_polygon{ inclusion }));
+    expect_angles_within_45_135(mesh);
+    // the mesh's boundary is the square's and the hole's: 2 loops
+    EXPECT_EQ(QM::compute_quality(mesh).number_of_boundary_loops, 2u);
+  }
+  // the regions' attributes (materials) reach their quads
+  Domain d = qm2_test::polygons({ qm2_test::rectangle(0, 0, 10, 10), qm2_test::disc(5, 5, 3, 48),
+                                  qm2_test::rectangle(0.5, 0.5, 1.5, 1.5) },
+                                { K::Point_2(1, 1) });
+  d.region_attributes = { { K::Point_2(9, 9), 5, 0 }, { K::Point_2(5, 5), 7, 0 } };
+  const QM::Quad_mesh_2<K::Point_2> mesh = Mesher(d).run();
+  ASSERT_EQ(mesh.regions.size(), 2u);
+  EXPECT_EQ(mesh.regions[0].tag, 5);
+  EXPECT_EQ(mesh.regions[1].tag, 7);
+  EXPECT_TRUE(interfaces_are_edge_chains(mesh, d, Inside_polygon{ qm2_test::disc(5, 5, 3, 48) }));
+}
+
+// The paper's future work: an air foil's inside and its far field, in one mesh.
+TEST(Quadtree_mesher_2, an_air_foil_is_meshed_inside_and_out)
+{
+  Domain d;
+  std::string error;
+  ASSERT_TRUE(QM::IO::read_poly(std::string(QM2_DATA_DIR) + "/naca0012/naca0012.poly", d, &error)) << error;
+  // its hole point goes; a small hole elsewhere keeps Triangle's rule (with hole points)
+  const std::vector<K::Point_2> foil(d.points.begin() + 4, d.points.end());
+  const std::vector<K::Point_2> hole = qm2_test::rectangle(-15, -15, -14.5, -14.5);
+  d.holes = { K::Point_2(-14.75, -14.75) };
+  const std::size_t base = d.points.size();
+  d.points.insert(d.points.end(), hole.begin(), hole.end());
+  for(std::size_t k = 0; k < 4; ++k) {
+    d.segments.push_back({ base + k, base + (k + 1) % 4 });
+    d.segment_markers.push_back(3);
+  }
+  Mesher mesher(d);
+  const QM::Quad_mesh_2<K::Point_2> mesh = mesher.run();
+  ASSERT_EQ(mesh.regions.size(), 2u);
+  EXPECT_TRUE(interfaces_are_edge_chains(mesh, d, Inside_polygon{ foil }));
+  expect_angles_within_45_135(mesh);
+}
+
+// A corner under 45 degrees on either side of an interface is not supported yet: the strip
+// on the wedge's side cannot take the nodes the fan on the other side needs. Where angles
+// stay out, the mesher names the corner.
+Domain square_holding_a_wedge(double degrees) // a wedge of `degrees` at (6, 5), 3 long
+{
+  const double half_width = 3 * std::tan(degrees / 2 * CGAL_PI / 180);
+  return qm2_test::polygons({ qm2_test::rectangle(0, 0, 10, 10),
+                              { K::Point_2(3, 5 - half_width), K::Point_2(6, 5), K::Point_2(3, 5 + half_width) },
+                              qm2_test::rectangle(0.5, 0.5, 1.5, 1.5) },
+                            { K::Point_2(1, 1) });
+}
+
+TEST(Quadtree_mesher_2, a_sharp_interface_corner_is_named_where_angles_stay_out)
+{
+  const Domain d = square_holding_a_wedge(40);
+  Mesher mesher(d);
+  const QM::Quad_mesh_2<K::Point_2> mesh = mesher.run();
+  EXPECT_TRUE(interfaces_are_edge_chains(mesh, d, Inside_polygon{ std::vector<K::Point_2>(d.points.begin() + 4, d.points.begin() + 7) }));
+  EXPECT_GT(mesher.buffer_report().bad_angle_quads, 0u);
+  const std::string note = mesher.sharp_interface_corner_note();
+  EXPECT_NE(note.find("input point 5 (6, 5) is a corner of 40"), std::string::npos) << note;
+  // none on a mild interface
+  const Domain mild = qm2_test::polygons({ qm2_test::rectangle(0, 0, 10, 10), qm2_test::rectangle(4, 4, 6, 6),
+                                           qm2_test::rectangle(0.5, 0.5, 1.5, 1.5) },
+                                         { K::Point_2(1, 1) });
+  EXPECT_EQ(Mesher(mild).sharp_interface_corner_note(), "");
+  // where the buffer cannot be built at all, the error names it
+  const Domain needle = square_holding_a_wedge(15);
+  try {
+    Mesher(needle).run();
+    ADD_FAILURE() << "no Meshing_error";
+  } catch(const QM::Meshing_error& e) {
+    EXPECT_NE(std::string(e.what()).find("input point 5 (6, 5) is a corner of 15 degrees on an interface"), std::string::npos)
+      << e.what();
+  }
 }
 
 TEST(Quadtree_mesher_2, stage_timings_are_recorded)

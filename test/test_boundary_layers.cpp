@@ -307,6 +307,34 @@ TEST(Boundary_layers, regional_attributes_reach_the_cells_beyond_the_layers)
   }
 }
 
+// An interface has the domain on both sides: the holes that are walls by default leave it
+// out, and wall markers on it are refused by name.
+TEST(Boundary_layers, an_interface_is_no_wall)
+{
+  QM::Domain_2<K> d = qm2_test::polygons({ qm2_test::rectangle(-5, -5, 5, 5), qm2_test::disc(0, 0, 0.5, 48),
+                                           qm2_test::rectangle(2, 2, 3, 3) },
+                                         { Point_2(2.5, 2.5) });
+  d.segment_markers.assign(d.segments.size(), 2); // the disc's
+  std::fill(d.segment_markers.begin(), d.segment_markers.begin() + 4, 1);
+  std::fill(d.segment_markers.end() - 4, d.segment_markers.end(), 3);
+  const Layered l = mesh_with_layers(d, 3, 1e-3, 1.2);
+  expect_valid_with_angles(l, 45); // fans at the square's corners
+  ASSERT_EQ(l.report.walls.size(), 1u);
+  EXPECT_EQ(l.report.walls[0].marker, 3);
+  ASSERT_EQ(l.mesh.regions.size(), 2u);
+  for(std::size_t q = 0; q < l.mesh.quads.size(); ++q) { // the disc's quads are region 1
+    const auto& v = l.mesh.quads[q];
+    const Point_2 centre = CGAL::centroid(l.mesh.points[v[0]], l.mesh.points[v[1]], l.mesh.points[v[2]], l.mesh.points[v[3]]);
+    EXPECT_EQ(l.mesh.quad_regions[q], CGAL::to_double(CGAL::squared_distance(centre, Point_2(0, 0))) < 0.25 ? 1u : 0u) << q;
+  }
+  try {
+    mesh_with_layers(d, 3, 1e-3, 1.2, { 2 });
+    ADD_FAILURE() << "an interface was taken for a wall";
+  } catch(const QM::Meshing_error& e) {
+    EXPECT_NE(std::string(e.what()).find("is an interface between two regions, not a wall"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Boundary_layers, bad_values_are_clear_errors)
 {
   EXPECT_THROW(QM::Boundary_layer_criteria_2(0, 1e-3, 1.2), QM::Meshing_error);

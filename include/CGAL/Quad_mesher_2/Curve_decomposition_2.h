@@ -662,6 +662,7 @@ Domain_2<K> decompose_domain_curves(const Domain_2<K>& domain, const Curve_decom
   const std::vector<std::vector<int>> edge_markers = internal::loop_edge_markers(domain, loops);
   for(std::size_t l = 0; l < loops.loops.size(); ++l) {
     const Boundary_loop_2<K>& loop = loops.loops[l];
+    if(loop.twin < l) continue; // an interface is one curve, decomposed from its first side
     std::vector<typename K::Point_2> control;
     std::vector<std::string> control_labels;
     control.reserve(loop.vertices.size());

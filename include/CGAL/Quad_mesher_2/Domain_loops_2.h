@@ -49,6 +49,12 @@ struct Boundary_loop_2
   /// The region the loop bounds: the face of the domain inside its outer loop and outside the
   /// holes within; regions are numbered from 0 in the order of their outer loops.
   std::size_t region = 0;
+  /// For a loop of an interface (the domain on both sides: a boundary between two regions),
+  /// the index of its twin, the loop of the same vertices in the opposite order that bounds
+  /// the region on the other side; `std::size_t(-1)` for a loop of the domain's boundary.
+  /// The twin of an interface's outer loop (counterclockwise, the region inside) is the
+  /// hole loop of the region around it, listed right after it.
+  std::size_t twin = std::size_t(-1);
 };
 
 /// \ingroup PkgQuadMesher2Ref
@@ -148,6 +154,14 @@ public:
       loop.region = m_region[l];
       // Domain on the left: an outer loop must turn left (CCW), a hole right (CW).
       if(m_ccw[l] != loop.is_outer) std::reverse(loop.vertices.begin() + 1, loop.vertices.end());
+      out.loops.push_back(loop);
+      if(!m_interface[l]) continue;
+      // the hole of the region around it, in the opposite direction from the same first vertex
+      loop.is_outer = false;
+      loop.region = m_region[m_parent[l]];
+      std::reverse(loop.vertices.begin() + 1, loop.vertices.end());
+      loop.twin = out.loops.size() - 1;
+      out.loops.back().twin = out.loops.size();
       out.loops.push_back(std::move(loop));
     }
     return out;
@@ -458,12 +472,11 @@ private:
     for(std::size_t l = 0; l < nl; ++l)
       m_in_domain[l] = parity ? (m_depth[l] % 2 == 0) : m_hole_in[l] == none;
     m_is_outer.resize(nl);
+    m_interface.assign(nl, false);
     for(std::size_t l = 0; l < nl; ++l) {
       const bool inside = m_in_domain[l];
       const bool outside = m_in_domain[m_parent[l] == none ? nl : m_parent[l]];
-      if(inside && outside)
-        throw Meshing_error("the domain lies on both sides of " + loop_str(l) +
-                            ": internal boundaries are not supported; if the loop bounds a hole, put a hole point inside it");
+      m_interface[l] = inside && outside; // only with hole points: depth parity alternates
       if(!inside && !outside) {
         // Hole points on both sides (outside a top loop is the unbounded region): one of them
         // is in no hole. Name the one on the side of even depth, where nesting puts the domain
@@ -537,6 +550,7 @@ private:
   std::vector<std::size_t> m_hole_in;  // per region (index nl: unbounded), its first hole point or none
   std::vector<bool> m_in_domain;
   std::vector<bool> m_is_outer;
+  std::vector<bool> m_interface; // per loop: the domain on both sides
   std::vector<std::size_t> m_region;  // per loop, the region it bounds
   std::size_t m_regions = 0;
 };
@@ -567,9 +581,10 @@ FT loops_balanced_sum(std::vector<FT> v)
 /// the unbounded one, and for each loop the part inside it but outside the loops directly
 /// nested in it.
 /// - With hole points, a region is in the domain iff it is bounded and contains no hole point
-///   (Triangle's rule). Every loop must then have the domain on exactly one side: a loop
-///   with the domain on both sides (a hole without a hole point, or an internal boundary) or
-///   on neither side is an error.
+///   (Triangle's rule). A loop with the domain on both sides is an interface between two
+///   regions: it is returned twice, as the outer loop of the region inside it and, right
+///   after, as a hole loop of the region around it (`Boundary_loop_2::twin`). A loop with the
+///   domain on neither side is an error.
 /// - Without hole points, regions alternate with nesting depth: inside a depth-0 loop is
 ///   domain, inside a depth-1 loop a hole, inside a depth-2 loop (an island in a hole) domain
 ///   again, and so on.
@@ -587,9 +602,9 @@ FT loops_balanced_sum(std::vector<FT> v)
 /// than 3 vertices; a vertex with one segment (open loop, dangling segment) or with more than
 /// two (touching or branching loops); a loop whose vertices are all collinear; two segments
 /// that cross, overlap, or touch (a vertex on another segment, or two vertices at the same
-/// place); a hole point on a segment or outside every loop; a loop with the domain on both
-/// sides; hole points on both sides of a loop (named by the one on the side nesting puts in
-/// the domain: inside a top loop, in an island); a point on no segment that lies on a segment
+/// place); a hole point on a segment or outside every loop; hole points on both sides of a
+/// loop (named by the one on the side nesting puts in the domain: inside a top loop, in an
+/// island); a point on no segment that lies on a segment
 /// or outside the domain; a regional attribute's point on a segment or outside the domain, or
 /// two different attributes (or maximum areas) in one region.
 template <class K>
@@ -653,7 +668,8 @@ namespace internal {
 
 /// The boundary marker of every loop edge: `[l][k]` for the edge from vertex k to vertex k + 1
 /// of loop l, the `Domain_2::segment_markers` entry of its segment or, where the domain has
-/// none, l + 1 (the loops numbered from 1 as `extract_loops()` orders them, outermost first).
+/// none, the loop's number (the loops numbered from 1 as `extract_loops()` orders them,
+/// outermost first, an interface's twin taking the number of the loop it follows).
 template <class K>
 std::vector<std::vector<int>> loop_edge_markers(const Domain_2<K>& domain, const Domain_loops_2<K>& loops)
 {
@@ -666,9 +682,11 @@ std::vector<std::vector<int>> loop_edge_markers(const Domain_2<K>& domain, const
   }
   std::sort(by_ends.begin(), by_ends.end());
   std::vector<std::vector<int>> markers(loops.loops.size());
+  int number = 0;
   for(std::size_t l = 0; l < loops.loops.size(); ++l) {
     const auto& v = loops.loops[l].vertices;
-    markers[l].assign(v.size(), int(l + 1));
+    if(loops.loops[l].twin > l) ++number; // an interface's twin follows it: one number
+    markers[l].assign(v.size(), number);
     if(by_ends.empty()) continue;
     for(std::size_t k = 0; k < v.size(); ++k) {
       const std::size_t a = v[k], b = v[(k + 1) % v.size()];

@@ -250,12 +250,12 @@ public:
     xy.reserve(mesh.points.size());
     for(const Point_2& p : mesh.points) xy.push_back(internal::to_point_2d(p));
     const std::vector<internal::Point_2d> before = xy;
-    std::vector<char> pinned = pinned_vertices(xy);
+    const auto locator = internal::make_loop_locator(m_domain, m_loops);
+    std::vector<char> pinned = pinned_vertices(xy, *locator);
     // ten times the distance under which vertices are near duplicates (the whole-mesh check's and
     // the verifier's 1e-8 of the diagonal), below the finest cells of deep trees (30P30N's,
     // depth 22: about 1.7e-7 of the diagonal), which a larger floor would freeze
     const double min_edge = 1e-7 * box_diagonal();
-    const auto locator = internal::make_loop_locator(m_domain, m_loops);
     const internal::Boundary_slides slides(xy, mesh.quads, *locator, m_criteria.chord_tolerance() * locator->diagonal());
     Mesh unsmoothed = mesh;
     m_smoothing_moves = internal::Mesh_smoothing(xy, mesh.quads, pinned, min_edge, &slides).smooth(max_smoothing_passes);
@@ -327,6 +327,16 @@ public:
     FINEST_CELLS  ///< the cells asked for are finer than the quadtree may make (its depth)
   };
   Rounds_end rounds_end() const { return m_rounds.end(); }
+  /// where angles stay out after the rounds on a domain with interfaces, a note naming its
+  /// sharpest interface corner under 45 degrees on either side, which the rounds cannot
+  /// mend (\ref QM2Interfaces), starting "; "; empty if it has none
+  std::string sharp_interface_corner_note() const
+  {
+    const auto corners = sharp_interface_corners();
+    const auto sharpest = std::min_element(corners.begin(), corners.end(),
+                                           [](const auto& a, const auto& b) { return a.second < b.second; });
+    return sharpest == corners.end() ? std::string() : interface_corner_note(*sharpest);
+  }
   /// what one round of `run()` past the clearance found: how it went decides the next
   struct Round_figures
   {
@@ -725,7 +735,50 @@ private:
     msg << ", after " << m_rounds.round() << " refinement rounds";
     if(refused)
       msg << "; finer cells are refused there: " << m_tree->depth_limit();
+    // a failure within 32 cells of a sharp interface corner names it: the strip on one side
+    // takes the nodes the other side chose (QM2Interfaces), which a wedge's tip and the fan
+    // about it cannot share
+    if(!requests.empty())
+      msg << interface_corner_note(sharp_interface_corner_near(requests.front().first, 32 * requests.front().second));
     return msg.str();
+  }
+
+  // the interface corners sharper than 45 degrees on either side: (input point, that angle)
+  std::vector<std::pair<std::size_t, double>> sharp_interface_corners() const
+  {
+    std::vector<std::pair<std::size_t, double>> corners;
+    for(std::size_t l = 0; l < m_loops.loops.size(); ++l) {
+      const auto& loop = m_loops.loops[l];
+      if(loop.twin == std::size_t(-1) || loop.twin < l) continue;
+      for(std::size_t k = 0; k < loop.vertices.size(); ++k) {
+        const double a = internal::loop_corner_angle(m_domain, loop, k);
+        if((std::min)(a, 360.0 - a) < 45.0) corners.emplace_back(loop.vertices[k], (std::min)(a, 360.0 - a));
+      }
+    }
+    return corners;
+  }
+
+  // of the sharp interface corners, the nearest to `at` within `reach`, or none
+  std::pair<std::size_t, double> sharp_interface_corner_near(const internal::Point_2d& at, double reach) const
+  {
+    std::pair<std::size_t, double> found(std::size_t(-1), 0.0);
+    for(const auto& corner : sharp_interface_corners()) {
+      const double d = internal::length_2d(internal::to_point_2d(m_domain.points[corner.first]) - at);
+      if(d <= reach) { reach = d; found = corner; }
+    }
+    return found;
+  }
+
+  // "; input point N (x, y) is a corner of A degrees on an interface ...", or empty for none
+  std::string interface_corner_note(const std::pair<std::size_t, double>& corner) const
+  {
+    if(corner.first == std::size_t(-1)) return std::string();
+    const Point_2& p = m_domain.points[corner.first];
+    std::ostringstream note;
+    note << "; input point " << m_domain.point_label(corner.first) << " (" << CGAL::to_double(p.x()) << ", "
+         << CGAL::to_double(p.y()) << ") is a corner of " << corner.second << " degrees on an interface between two "
+         << "regions: interface corners under 45 degrees on either side are not supported yet";
+    return note.str();
   }
 
   // the first isolated point the last round lost (see lost_points()), `requests` the
@@ -953,15 +1006,30 @@ private:
            && quality.number_of_near_duplicate_vertices == 0;
   }
 
-  // the vertices the smoothing keeps where they are: the loops' vertices and isolated points
-  std::vector<char> pinned_vertices(const std::vector<internal::Point_2d>& xy) const
+  // the vertices the smoothing keeps where they are: the loops' vertices, isolated points and
+  // the points on interfaces (the buffer made them on an interface's segments, which stay
+  // chains of mesh edges)
+  std::vector<char> pinned_vertices(const std::vector<internal::Point_2d>& xy, const internal::Loop_locator& locator) const
   {
     const std::vector<double> angle = input_corner_angles(xy);
     std::vector<char> pinned(xy.size(), 0);
     for(std::size_t v = 0; v < xy.size(); ++v) pinned[v] = !std::isnan(angle[v]);
     for(std::size_t v : m_point_vertices)
       if(v < pinned.size()) pinned[v] = 1;
+    if(has_interfaces()) {
+      const double on = 1e-10 * locator.diagonal();
+      for(std::size_t v = 0; v < xy.size(); ++v) {
+        const internal::Loop_locator::Hit h = locator.closest(xy[v], on);
+        if(h.dist <= on && locator.twin(h.loop) != internal::Loop_locator::none) pinned[v] = 1;
+      }
+    }
     return pinned;
+  }
+
+  bool has_interfaces() const
+  {
+    return std::any_of(m_loops.loops.begin(), m_loops.loops.end(),
+                       [](const Boundary_loop_2<GeomTraits>& loop) { return loop.twin != std::size_t(-1); });
   }
 
   double box_diagonal() const

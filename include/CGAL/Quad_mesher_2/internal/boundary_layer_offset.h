@@ -123,14 +123,24 @@ std::vector<Wall_offset> wall_loops(const Domain_2<K>& domain, const Domain_loop
 {
   const std::vector<std::vector<int>> edge_markers = loop_edge_markers(domain, loops);
   std::set<int> wanted(markers.begin(), markers.end()), seen;
+  const std::size_t none = std::size_t(-1);
   bool any_hole = false;
-  for(const auto& l : loops.loops) any_hole = any_hole || !l.is_outer;
+  for(const auto& l : loops.loops) any_hole = any_hole || (!l.is_outer && l.twin == none);
   std::vector<Wall_offset> walls;
   for(std::size_t l = 0; l < loops.loops.size(); ++l) {
     std::size_t on_wall = 0;
     for(int m : edge_markers[l])
       if(wanted.count(m) != 0) { ++on_wall; seen.insert(m); }
-    const bool is_wall = markers.empty() ? (any_hole ? !loops.loops[l].is_outer : true) : on_wall > 0;
+    // an interface has the domain on both sides: no wall (a stack would face its own twin)
+    const bool on_interface = loops.loops[l].twin != none;
+    if(on_interface && on_wall > 0) {
+      std::ostringstream msg;
+      msg << "boundary layers: loop " << l + 1 << " (through input point "
+          << domain.point_label(loops.loops[l].vertices.front())
+          << ") is an interface between two regions, not a wall: boundary layers on interfaces are not supported";
+      throw Meshing_error(msg.str());
+    }
+    const bool is_wall = !on_interface && (markers.empty() ? (any_hole ? !loops.loops[l].is_outer : true) : on_wall > 0);
     if(!is_wall) continue;
     if(!markers.empty() && on_wall != edge_markers[l].size()) {
       std::ostringstream msg;
@@ -443,7 +453,7 @@ Domain_2<K> offset_domain(const Domain_2<K>& domain, const Domain_loops_2<K>& lo
   std::vector<char> is_wall(loops.loops.size(), 0);
   for(const Wall_offset& w : walls) is_wall[w.loop] = 1;
   for(std::size_t l = 0; l < loops.loops.size(); ++l) {
-    if(is_wall[l] != 0) continue;
+    if(is_wall[l] != 0 || loops.loops[l].twin < l) continue; // an interface's segments once
     const auto& lv = loops.loops[l].vertices;
     for(std::size_t e = 0; e < lv.size(); ++e) {
       out.segments.push_back({ { index[lv[e]], index[lv[(e + 1) % lv.size()]] } });

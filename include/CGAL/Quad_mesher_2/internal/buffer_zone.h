@@ -178,17 +178,20 @@ public:
     cycles = mesh_boundary_cycles(mesh.quads, *quads_at, mesh.points.size());
   }
 
-  // per cycle: the loop nearest the most of its vertices, and how many
+  // per cycle: the loop nearest the most of its vertices, and how many; of an interface's
+  // twins (the locator finds the first), the one turning as the cycle does
   std::vector<Vote> cycle_votes() const
   {
     std::vector<Vote> result;
     std::vector<std::size_t> votes(loops.loops.size());
-    for(const std::vector<std::size_t>& cycle : cycles) {
+    for(std::size_t c = 0; c < cycles.size(); ++c) {
       std::fill(votes.begin(), votes.end(), 0);
-      for(std::size_t v : cycle)
+      for(std::size_t v : cycles[c])
         ++votes[locator->closest(xy[v], 2 * local_size[v]).loop];
-      const std::size_t l = std::size_t(std::max_element(votes.begin(), votes.end()) - votes.begin());
-      result.emplace_back(l, votes[l]);
+      std::size_t l = std::size_t(std::max_element(votes.begin(), votes.end()) - votes.begin());
+      const std::size_t count = votes[l];
+      if(loops.loops[l].twin != none && (cycle_area(c) > 0) != loops.loops[l].is_outer) l = loops.loops[l].twin;
+      result.emplace_back(l, count);
     }
     return result;
   }
@@ -378,14 +381,30 @@ public:
   // every input vertex on the chain has its corner angle
   bool is_input_vertex(std::size_t v) const { return !std::isnan(input_corner_angle(v)); }
 
+  // An input vertex on an interface has a corner on either side, a and 360 - a (its corner
+  // angle is its first side's): the sharper and the wider of the two. Elsewhere both are the
+  // corner's angle.
+  double sharp_corner_angle(std::size_t v) const
+  {
+    const double a = input_corner_angle(v);
+    return on_interface(v) ? (std::min)(a, 360.0 - a) : a;
+  }
+  double wide_corner_angle(std::size_t v) const
+  {
+    const double a = input_corner_angle(v);
+    return on_interface(v) ? (std::max)(a, 360.0 - a) : a;
+  }
+  bool on_interface(std::size_t v) const { return v < interface_mark.size() && interface_mark[v] != 0; }
+
   // true if `angle`, a quad's angle at mesh vertex v, is forced: v is an input corner sharper
   // than 45 degrees and the quad spans all of it (a split corner has less). The quad's other
   // three angles are not. A corner over 270 degrees forces nothing: a fan of three quads
-  // splits it within [45, 135].
+  // splits it within [45, 135]. On an interface, a quad on the wide side spans some other
+  // angle than the sharp side's.
   bool forced_angle(std::size_t v, double angle) const
   {
-    const double alpha = input_corner_angle(v);
-    return alpha < 45.0 && angle >= alpha - 1e-3; // false for NaN
+    const double alpha = sharp_corner_angle(v);
+    return alpha < 45.0 && angle >= alpha - 1e-3 && (angle <= alpha + 1e-3 || !on_interface(v)); // false for NaN
   }
 
   // true if an input corner (a loop vertex turning by the feature angle or more) at an end of
@@ -462,6 +481,10 @@ public:
     input_vertex[input] = id;
     corner_angle.resize(id + 1, std::numeric_limits<double>::quiet_NaN());
     corner_angle[id] = loop_corner_angle(domain, loops.loops[l], k);
+    if(loops.loops[l].twin != none) {
+      interface_mark.resize(id + 1, 0);
+      interface_mark[id] = 1;
+    }
     return id;
   }
 
@@ -502,7 +525,7 @@ public:
     // other three against [45, 135], not the paper's looser [alpha, 180 - alpha]. They fit
     // there for any alpha (they sum to 360 - alpha: 120 each, say).
     for(int k = 0; k < 4; ++k)
-      if(input_corner_angle(q[k]) < 45.0 // cheap test first: the cost runs in inner loops
+      if(sharp_corner_angle(q[k]) < 45.0 // cheap test first: the cost runs in inner loops
          && forced_angle(q[k], corner_angle_degrees(P[(k + 3) % 4], P[k], P[(k + 1) % 4]))) {
         double b = 0;
         for(int j = 0; j < 4; ++j)
@@ -591,9 +614,11 @@ public:
   std::vector<std::size_t> cycle_loop;
   std::vector<std::vector<Point_2d>> first_points; // per cycle: its first buffer points (buffer1 on)
   std::vector<std::size_t> first_base; // per cycle: the mesh index of its first buffer point
+  std::vector<std::vector<std::size_t>> loop_chain; // per loop: its boundary chain's mesh ids (buffer2 on)
   std::vector<std::size_t> first_core; // core vertex of each first buffer point
   std::vector<std::size_t> input_vertex; // per input point: its mesh point, or none
   std::vector<double> corner_angle; // per mesh point: its input corner's angle, or NaN
+  std::vector<char> interface_mark; // per mesh point: an input vertex on an interface (or none)
   std::vector<Slide> slide_of; // per point: its Slide (loop none: it does not slide; see slide())
   std::vector<char> on_cycle_mark; // per core point
   std::vector<char> repaired_mark; // per point

@@ -115,6 +115,7 @@ public:
     const auto bbox = m_traits.construct_bbox_2_object();
     const auto seg = m_traits.construct_segment_2_object();
     for(std::size_t l = 0; l < m_loops.loops.size(); ++l) {
+      if(m_loops.loops[l].twin < l) continue; // an interface once, as the outer loop inside it
       const auto& v = m_loops.loops[l].vertices;
       for(std::size_t i = 0; i < v.size(); ++i) {
         const Point_2& a = m_domain.points[v[i]];

@@ -41,8 +41,12 @@ public:
     Point_2d point = ORIGIN;
   };
 
-  Loop_locator(std::vector<std::vector<Point_2d>> loops) : m_loops(std::move(loops))
+  /// `twins[l]`: the loop of the same points as l in the opposite order (an interface seen
+  /// from its other side), or none; empty if no loop has one
+  Loop_locator(std::vector<std::vector<Point_2d>> loops, std::vector<std::size_t> twins = {})
+    : m_loops(std::move(loops)), m_twin(std::move(twins))
   {
+    m_twin.resize(m_loops.size(), none);
     std::vector<Bbox_2>& boxes = m_boxes; // the box tree keeps a reference
     double xmin = HUGE_VAL, xmax = -HUGE_VAL, ymin = HUGE_VAL, ymax = -HUGE_VAL;
     m_arc.resize(m_loops.size());
@@ -75,16 +79,20 @@ public:
     return m_arc[h.loop][h.edge] + h.t * (m_arc[h.loop][h.edge + 1] - m_arc[h.loop][h.edge]);
   }
 
+  /// the loop of the same points as `l` in the opposite order, or none
+  std::size_t twin(std::size_t l) const { return m_twin[l]; }
+
   /// the closest point to `p` on loop `l` (any loop if `l` is none), searching first within
-  /// `radius` of `p`
-  /// (with `other_than`: on any loop but `l`)
+  /// `radius` of `p` (with `other_than`: on any loop but `l` and its twin). Of equally near
+  /// edges the one of the lower loop index is found: of twins, the first.
   Hit closest(const Point_2d& p, double radius, std::size_t l = none, bool other_than = false) const
   {
     Hit best;
     double r = (std::max)(radius, 1e-300);
     for(;;) {
       m_tree->query(Bbox_2(p.x() - r, p.y() - r, p.x() + r, p.y() + r), [&](std::size_t s) {
-        if(l != none && (m_edge_of[s][0] != l) != other_than) return;
+        const std::size_t on = m_edge_of[s][0];
+        if(l != none && (other_than ? on == l || on == m_twin[l] : on != l)) return;
         Hit h = on_edge(p, m_edge_of[s][0], m_edge_of[s][1]);
         // equally near edges (a point on a symmetry axis) by their index, not by rounding:
         // the same choice on a scaled or moved domain
@@ -147,6 +155,7 @@ private:
   }
 
   std::vector<std::vector<Point_2d>> m_loops;
+  std::vector<std::size_t> m_twin;
   std::vector<std::array<std::size_t, 2>> m_edge_of;
   std::vector<std::vector<double>> m_arc;
   std::vector<Bbox_2> m_boxes;
@@ -160,10 +169,13 @@ template <class K>
 std::unique_ptr<Loop_locator> make_loop_locator(const Domain_2<K>& domain, const Domain_loops_2<K>& loops)
 {
   std::vector<std::vector<Point_2d>> pts(loops.loops.size());
-  for(std::size_t l = 0; l < loops.loops.size(); ++l)
+  std::vector<std::size_t> twins(loops.loops.size());
+  for(std::size_t l = 0; l < loops.loops.size(); ++l) {
     for(std::size_t v : loops.loops[l].vertices)
       pts[l].push_back(to_point_2d(domain.points[v]));
-  return std::make_unique<Loop_locator>(std::move(pts));
+    twins[l] = loops.loops[l].twin;
+  }
+  return std::make_unique<Loop_locator>(std::move(pts), std::move(twins));
 }
 
 } // namespace internal

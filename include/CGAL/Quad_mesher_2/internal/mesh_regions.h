@@ -4,9 +4,10 @@
 //
 // The regions of a whole domain's mesh (`Quad_mesh_2::regions`): the faces of the domain,
 // those of one regional attribute merged, each with its output tag, and the region of every
-// quad. The faces' meshes share no vertex (loops are disjoint), so each connected piece of
-// the mesh lies in one face, which any of its boundary edges tells by the loop it lies on
-// (found with its marker: mark_boundary_and_regions()).
+// quad. Faces meet only along interfaces, so each piece of the mesh its quads make across the
+// edges on no interface lies in one face, which any of its boundary edges tells by the loop
+// it lies on (found with its marker: mark_boundary_and_regions()), or any of its interface
+// edges by the side it lies on.
 
 #ifndef CGAL_QUAD_MESHER_2_INTERNAL_MESH_REGIONS_H
 #define CGAL_QUAD_MESHER_2_INTERNAL_MESH_REGIONS_H
@@ -15,11 +16,15 @@
 #include <CGAL/Quad_mesher_2/Domain_loops_2.h>
 #include <CGAL/Quad_mesher_2/Quad_mesh_2.h>
 #include <CGAL/Quad_mesher_2/internal/boundary_markers.h>
+#include <CGAL/Quad_mesher_2/internal/loop_locator.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
 #include <map>
+#include <memory>
 #include <numeric>
 #include <set>
 #include <vector>
@@ -27,6 +32,45 @@
 namespace CGAL {
 namespace Quad_mesher_2 {
 namespace internal {
+
+/// Which side of an interface a mesh edge lies on: the interface loop (of the twins, the
+/// one that has the domain on its left, see `Boundary_loop_2::twin`) whose left side the
+/// half-edge a -> b runs along, found at the edge's midpoint.
+template <class K>
+class Interface_sides
+{
+public:
+  static constexpr std::size_t none = std::size_t(-1);
+
+  Interface_sides(const Quad_mesh_2<typename K::Point_2>& mesh, const Domain_2<K>& domain, const Domain_loops_2<K>& loops)
+    : m_mesh(mesh),
+      m_has_interfaces(std::any_of(loops.loops.begin(), loops.loops.end(),
+                                   [](const Boundary_loop_2<K>& loop) { return loop.twin != none; }))
+  {
+    if(!m_has_interfaces) return;
+    m_locator = make_loop_locator(domain, loops);
+    m_on = 1e-10 * m_locator->diagonal();
+  }
+
+  /// the interface loop that has half-edge a -> b on its left, or none if the edge lies on no interface
+  std::size_t loop_on_the_right(std::size_t a, std::size_t b) const
+  {
+    if(!m_has_interfaces) return none;
+    const Point_2d pa = to_point_2d(m_mesh.points[a]), pb = to_point_2d(m_mesh.points[b]);
+    const Loop_locator::Hit h = m_locator->closest(CGAL::midpoint(pa, pb), m_on);
+    const std::size_t twin = m_locator->twin(h.loop);
+    if(h.dist > m_on || twin == none) return none;
+    const auto& loop = m_locator->loop(h.loop);
+    const Vector_2d along = loop[(h.edge + 1) % loop.size()] - loop[h.edge];
+    return along * (pb - pa) > 0 ? h.loop : twin;
+  }
+
+private:
+  const Quad_mesh_2<typename K::Point_2>& m_mesh;
+  const bool m_has_interfaces;
+  std::unique_ptr<Loop_locator> m_locator;
+  double m_on = 0;
+};
 
 /// the output region of each region of the domain (`Boundary_loop_2::region`), appended to
 /// `out`: one per attribute, one per region without
@@ -63,7 +107,9 @@ std::vector<std::size_t> domain_regions(const Domain_2<K>& domain, const Domain_
 }
 
 /// Fills `mesh.regions` and `mesh.quad_regions`, given the loop each of `mesh.boundary_edges`
-/// lies on (`edge_loops`)
+/// lies on (`edge_loops`, in the order of the quads and their corners). The quads are joined
+/// into pieces across the edges they share but those on an interface; a piece takes the
+/// region of the loop of a boundary edge it has, or of the interface loop it lies on the left of.
 template <class K>
 void assign_regions(Quad_mesh_2<typename K::Point_2>& mesh, const Domain_2<K>& domain, const Domain_loops_2<K>& loops,
                     const std::vector<std::size_t>& edge_loops)
@@ -71,23 +117,47 @@ void assign_regions(Quad_mesh_2<typename K::Point_2>& mesh, const Domain_2<K>& d
   const std::size_t none = std::size_t(-1);
   mesh.regions.clear();
   const std::vector<std::size_t> output_region = domain_regions(domain, loops, mesh.regions);
-  // the connected pieces of the mesh, by the vertices their quads share
-  std::vector<std::size_t> piece(mesh.points.size());
+  const Interface_sides<K> interfaces(mesh, domain, loops);
+  // half-edges by their ends, lower first: (lower, higher, quad, corner)
+  std::vector<std::array<std::size_t, 4>> half_edges;
+  half_edges.reserve(4 * mesh.quads.size());
+  for(std::size_t q = 0; q < mesh.quads.size(); ++q)
+    for(std::size_t c = 0; c < 4; ++c) {
+      const std::size_t a = mesh.quads[q][c], b = mesh.quads[q][(c + 1) % 4];
+      half_edges.push_back({ (std::min)(a, b), (std::max)(a, b), q, c });
+    }
+  std::sort(half_edges.begin(), half_edges.end());
+  std::vector<std::size_t> piece(mesh.quads.size());
   std::iota(piece.begin(), piece.end(), std::size_t(0));
-  auto find = [&](std::size_t v) {
-    while(piece[v] != v) v = piece[v] = piece[piece[v]];
-    return v;
+  auto find = [&](std::size_t q) {
+    while(piece[q] != q) q = piece[q] = piece[piece[q]];
+    return q;
   };
-  for(const auto& q : mesh.quads)
-    for(int k = 1; k < 4; ++k) piece[find(q[k])] = find(q[0]);
-  std::vector<std::size_t> region_of_piece(mesh.points.size(), none);
-  for(std::size_t e = 0; e < mesh.boundary_edges.size(); ++e) {
-    std::size_t& region = region_of_piece[find(mesh.boundary_edges[e].v0)];
-    if(region == none) region = output_region[loops.loops[edge_loops[e]].region];
+  std::vector<std::size_t> region_of_quad(mesh.quads.size(), none);
+  std::vector<char> on_boundary(4 * mesh.quads.size(), 1); // by 4 quad + corner
+  for(std::size_t i = 0; i + 1 < half_edges.size(); ++i) {
+    const auto& e = half_edges[i];
+    const auto& f = half_edges[i + 1];
+    if(f[0] != e[0] || f[1] != e[1]) continue;
+    ++i;
+    on_boundary[4 * e[2] + e[3]] = on_boundary[4 * f[2] + f[3]] = 0;
+    const std::size_t loop = interfaces.loop_on_the_right(mesh.quads[e[2]][e[3]], mesh.quads[e[2]][(e[3] + 1) % 4]);
+    if(loop == none) {
+      piece[find(e[2])] = find(f[2]);
+      continue;
+    }
+    region_of_quad[e[2]] = output_region[loops.loops[loop].region];
+    region_of_quad[f[2]] = output_region[loops.loops[loops.loops[loop].twin].region];
   }
+  std::size_t boundary_edge = 0;
+  for(std::size_t k = 0; k < on_boundary.size(); ++k)
+    if(on_boundary[k]) region_of_quad[k / 4] = output_region[loops.loops[edge_loops[boundary_edge++]].region];
+  std::vector<std::size_t> region_of_piece(mesh.quads.size(), none);
+  for(std::size_t q = 0; q < mesh.quads.size(); ++q)
+    if(region_of_quad[q] != none) region_of_piece[find(q)] = region_of_quad[q];
   mesh.quad_regions.resize(mesh.quads.size());
   for(std::size_t q = 0; q < mesh.quads.size(); ++q)
-    mesh.quad_regions[q] = region_of_piece[find(mesh.quads[q][0])];
+    mesh.quad_regions[q] = region_of_piece[find(q)];
 }
 
 /// Fills what a mesh of a whole domain carries beyond its quads: `mesh.boundary_edges` with

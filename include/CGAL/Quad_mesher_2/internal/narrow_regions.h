@@ -69,6 +69,7 @@ public:
     double arc_a;  // arc length along the loop at the source
     double length;
     bool needle_at_source; // the corner at the source (with the loop's previous segment) is a needle
+    bool two_sided = false; // on an interface: the domain on both sides
   };
 
   explicit Boundary_gap_finder(std::vector<Segment> segments, std::vector<double> loop_lengths,
@@ -142,7 +143,7 @@ private:
       // on the segment's line to rounding: outside (see the file comment)
       const V dir = here.segment.to_vector();
       const double side = CGAL::determinant(dir, c - q);
-      const bool outside = side <= 1e-9 * std::sqrt(dir.squared_length()) * d;
+      const bool outside = !here.two_sided && side <= 1e-9 * std::sqrt(dir.squared_length()) * d;
       const double width = outside ? outside_gap_weight * d : d;
       if(width >= best)
         return;
@@ -197,7 +198,8 @@ private:
   Box_tree m_tree;             // the box tree the loop validation uses
 };
 
-// The domain's boundary as the gap finder's segments, loop after loop, and each loop's length.
+// The domain's boundary as the gap finder's segments, loop after loop, and each loop's length;
+// an interface once, its twin loop left out (no segments, length 0).
 template <class K>
 std::vector<Boundary_gap_finder::Segment> gap_finder_segments(const Domain_2<K>& domain, const Domain_loops_2<K>& loops,
                                                               const K& traits, std::vector<double>& loop_lengths)
@@ -212,7 +214,8 @@ std::vector<Boundary_gap_finder::Segment> gap_finder_segments(const Domain_2<K>&
   std::vector<Boundary_gap_finder::Segment> segments;
   for(std::size_t l = 0; l < loops.loops.size(); ++l) {
     const auto& vs = loops.loops[l].vertices;
-    const std::size_t n = vs.size();
+    const bool twin_listed_before = loops.loops[l].twin < l;
+    const std::size_t n = twin_listed_before ? 0 : vs.size();
     double arc = 0;
     for(std::size_t k = 0; k < n; ++k) {
       const std::size_t before = vs[(k + n - 1) % n], source = vs[k], target = vs[(k + 1) % n];
@@ -221,7 +224,7 @@ std::vector<Boundary_gap_finder::Segment> gap_finder_segments(const Domain_2<K>&
       // convex with the domain on the left: decided on the input points, exactly
       const bool convex = orientation(domain.points[before], domain.points[source], domain.points[target]) == LEFT_TURN;
       const bool needle = convex && Boundary_gap_finder::sharper_than_needle(xy(before), segment.source(), segment.target());
-      segments.push_back({ segment, source, target, l, arc, length, needle });
+      segments.push_back({ segment, source, target, l, arc, length, needle, loops.loops[l].twin != std::size_t(-1) });
       arc += length;
     }
     loop_lengths.push_back(arc);

@@ -437,7 +437,9 @@ public:
     auto make_point = m_traits.construct_point_2_object();
     struct Band { Point_2d centre; int level, cells; };
     std::vector<Band> bands;
-    for(const auto& loop : m_loops.loops) {
+    for(std::size_t l = 0; l < m_loops.loops.size(); ++l) {
+      const auto& loop = m_loops.loops[l];
+      if(loop.twin < l) continue; // an interface once
       std::vector<Point_2d> xy;
       for(std::size_t v : loop.vertices) xy.push_back(to_point_2d(m_domain.points[v]));
       const Loop_turning turning(xy);
@@ -481,12 +483,15 @@ private:
   std::vector<Point_2d> points_in_own_cells() const
   {
     std::vector<Point_2d> own;
-    for(const auto& loop : m_loops.loops) {
+    for(std::size_t l = 0; l < m_loops.loops.size(); ++l) {
+      const auto& loop = m_loops.loops[l];
+      if(loop.twin < l) continue; // an interface once
       const std::size_t n = loop.vertices.size();
       for(std::size_t k = 0; k < n; ++k) {
         const Point_2d p = to_point_2d(m_domain.points[loop.vertices[k]]);
-        if(is_loop_feature(to_point_2d(m_domain.points[loop.vertices[(k + n - 1) % n]]), p,
-                           to_point_2d(m_domain.points[loop.vertices[(k + 1) % n]])))
+        if(loop.twin != std::size_t(-1) // an interface keeps every vertex
+           || is_loop_feature(to_point_2d(m_domain.points[loop.vertices[(k + n - 1) % n]]), p,
+                              to_point_2d(m_domain.points[loop.vertices[(k + 1) % n]])))
           own.push_back(p);
       }
     }

@@ -17,6 +17,8 @@
 // middle of its longest edge): the pairing decides where, which is how an odd triangle
 // count is made even and how a long ladder switches between its two phases (a ladder can
 // only switch at a gap with an even number of G edges; without one it shears end to end).
+// An interface is built from its first side, which keeps every loop vertex; the strip on its
+// twin takes that chain as it is, so that both sides share its nodes.
 
 #ifndef CGAL_QUAD_MESHER_2_INTERNAL_SECOND_BUFFER_LAYER_H
 #define CGAL_QUAD_MESHER_2_INTERNAL_SECOND_BUFFER_LAYER_H
@@ -73,10 +75,81 @@ public:
   void build()
   {
     if(!m_projection.project()) return;
-    add_plan(best_plan());
+    add_plan(on_interface_built_from_the_other_side() ? plan_on_twin_chain() : best_plan());
   }
 
 private:
+  // Whether the cycle's loop is the second of an interface's twins: the strip on the first
+  // side chose the chain, which the second must take as it is, so that the two sides share
+  // its nodes (Second_buffer_layer builds the first sides first).
+  bool on_interface_built_from_the_other_side() const { return m_zone.loops.loops[l].twin < l; }
+
+  // The pairing onto the chain the twin's strip made: each F point takes the chain node
+  // nearest its projection (in order along the loop), with no node added or left out.
+  Strip_plan plan_on_twin_chain()
+  {
+    Strip_plan plan;
+    const std::vector<std::size_t>& chain = m_zone.loop_chain[m_zone.loops.loops[l].twin];
+    if(chain.empty()) return plan; // not ok: the twin's strip failed
+    const Strip_positions proj = m_projection.spread(std::vector<bool>(nv, false));
+    Strip_nodes strip = chain_along_this_loop(chain, proj.P[0]);
+    give_first_points_their_nearest_nodes(strip, proj.P);
+    plan.best = m_pairing.pair(strip.fid, strip.gid, strip.g, std::vector<Extra_node>(n));
+    plan.ok = true;
+    plan.gid = std::move(strip.gid);
+    return plan;
+  }
+
+  // The chain's nodes by arclength along this loop, from the one nearest arclength `start`
+  // (the first F point's projection), which starts the strip.
+  Strip_nodes chain_along_this_loop(const std::vector<std::size_t>& chain, double start) const
+  {
+    std::vector<std::pair<double, std::size_t>> by_param; // arclength, mesh id
+    for(std::size_t id : chain) {
+      const Loop_locator::Hit h = m_zone.locator->closest(m_zone.xy[id], 1e-9 * m_zone.locator->diagonal(), l);
+      by_param.emplace_back(m_zone.locator->param(h), id);
+    }
+    std::size_t first = 0;
+    for(std::size_t k = 1; k < by_param.size(); ++k)
+      if(std::abs(cyclic(by_param[k].first - start)) < std::abs(cyclic(by_param[first].first - start))) first = k;
+    const double base = by_param[first].first;
+    for(auto& node : by_param) node.first = base + arc_after(node.first - base);
+    std::sort(by_param.begin(), by_param.end());
+    Strip_nodes strip;
+    for(const auto& node : by_param) {
+      strip.gparam.push_back(node.first);
+      strip.gid.push_back(node.second);
+    }
+    return strip;
+  }
+
+  // F point r (at arclength P[r]) takes the chain node nearest its projection, but no node
+  // before the previous point's; the first point takes the first node.
+  void give_first_points_their_nearest_nodes(Strip_nodes& strip, const std::vector<double>& P) const
+  {
+    const std::size_t M = strip.gid.size();
+    const double base = strip.gparam.front();
+    const std::size_t fbase = m_zone.first_base[c];
+    strip.g.assign(n, 0);
+    strip.fid.resize(n);
+    for(std::size_t r = 0; r < n; ++r) {
+      strip.fid[r] = fbase + rot(r);
+      if(r == 0) continue;
+      const double at = base + arc_after(P[r] - base);
+      std::size_t k = std::size_t(std::lower_bound(strip.gparam.begin(), strip.gparam.end(), at) - strip.gparam.begin());
+      const double after = k < M ? strip.gparam[k] : base + L;
+      if(k > 0 && at - strip.gparam[k - 1] < after - at) --k;
+      strip.g[r] = (std::max)(strip.g[r - 1], k);
+    }
+  }
+
+  // an arclength difference taken into [0, L)
+  double arc_after(double d) const
+  {
+    d = std::fmod(d, L);
+    return d < 0 ? d + L : d;
+  }
+
   // The strip's pairing, with four F points on the node of each corner marked in `four_at`
   // (see may_take_four_fan_points()) and three on the others' (from the unwrapped
   // projections: a second plan starts afresh).
@@ -124,12 +197,14 @@ private:
     const double O = m_projection.origin();
     std::vector<Node> nodes;
     std::vector<bool> snapped(nv, false);
+    // an interface keeps every vertex: its segments are the mesh's edges (constraints)
+    const bool on_interface = m_zone.loops.loops[l].twin != none;
     for(std::size_t r = 0; r < n; ++r)
       if(share[r] == none && snap[rot(r)] != none) snapped[snap[rot(r)]] = true;
     for(std::size_t k = 0; k < nv; ++k) {
       double s = std::fmod(m_zone.locator->arc(l, k) - O, L);
       if(s < 0) s += L;
-      nodes.push_back(Node{ O + s, k, none, loop_xy[k], snapped[k] || m_zone.is_feature(l, k) });
+      nodes.push_back(Node{ O + s, k, none, loop_xy[k], snapped[k] || on_interface || m_zone.is_feature(l, k) });
     }
     for(std::size_t r = 0; r < n; ++r)
       if(share[r] == none && snap[rot(r)] == none && P[r] < O + L * (1 - 1e-12))
@@ -626,6 +701,7 @@ private:
     for(std::size_t k = 0; k < M; ++k)
       if(auto* slide = m_zone.slide(gid[k]))
         slide->neighbors = { gid[(k + M - 1) % M], gid[(k + 1) % M] };
+    m_zone.loop_chain[l] = gid;
     for(const Quad& q : best.quads) {
       m_zone.add_quad(q);
       ++m_zone.report.second_layer_quads;
@@ -671,11 +747,15 @@ class Second_buffer_layer
 public:
   explicit Second_buffer_layer(Buffer_zone<K>& zone) : m_zone(zone) {}
 
+  // the cycles on an interface's second twin last: they take the chain of the first's
   void build_second_layer()
   {
     m_zone.layer_begin[1] = m_zone.mesh.quads.size();
-    for(std::size_t c = 0; c < m_zone.cycles.size(); ++c)
-      Buffer_strip<K>(m_zone, c).build();
+    m_zone.loop_chain.assign(m_zone.loops.loops.size(), {});
+    for(bool second_twins : { false, true })
+      for(std::size_t c = 0; c < m_zone.cycles.size(); ++c)
+        if((m_zone.loops.loops[m_zone.cycle_loop[c]].twin < m_zone.cycle_loop[c]) == second_twins)
+          Buffer_strip<K>(m_zone, c).build();
   }
 
 private:

@@ -84,7 +84,7 @@ public:
   {
     for(int k = 0; k < 4; ++k) {
       const std::size_t v = q[k], u = q[(k + 3) % 4], w = q[(k + 1) % 4];
-      if(!(m_zone.input_corner_angle(v) > 270.0 - angle_tolerance) || on_boundary_chain(u) == on_boundary_chain(w)) continue;
+      if(!(m_zone.wide_corner_angle(v) > 270.0 - angle_tolerance) || on_boundary_chain(u) == on_boundary_chain(w)) continue;
       if(corner_angle_degrees(m_zone.xy[u], m_zone.xy[v], m_zone.xy[w]) > 135.0 + angle_tolerance) return k;
     }
     return -1;
