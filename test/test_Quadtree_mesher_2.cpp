@@ -590,6 +590,22 @@ void expect_angles_within_45_135(const QM::Quad_mesh_2<K::Point_2>& mesh)
   EXPECT_LE(quality.max_angle, 135.0 + 1e-7);
 }
 
+// The regions of a mesh with a non-manifold edge (three quads on one edge, as a broken mesh
+// given to the marking could have) come from the same boundary edges as the markers: no
+// read past them (the sanitizers' build runs this).
+TEST(Quadtree_mesher_2, regions_of_a_non_manifold_mesh_read_only_its_boundary_edges)
+{
+  const Domain d = qm2_test::polygons({ qm2_test::rectangle(0, 0, 2, 1) });
+  const QM::Domain_loops_2<K> loops = QM::extract_loops(d);
+  QM::Quad_mesh_2<K::Point_2> mesh;
+  mesh.points = { K::Point_2(0, 0), K::Point_2(1, 0), K::Point_2(1, 1), K::Point_2(0, 1), K::Point_2(2, 0),
+                  K::Point_2(2, 1), K::Point_2(1.5, 0.5), K::Point_2(1.5, 0.7) };
+  mesh.quads = { { 0, 1, 2, 3 }, { 1, 4, 5, 2 }, { 1, 6, 7, 2 } }; // edge 1-2 in all three
+  QM::internal::mark_boundary_and_regions(mesh, d, loops);
+  ASSERT_EQ(mesh.quad_regions.size(), 3u);
+  for(std::size_t r : mesh.quad_regions) EXPECT_EQ(r, 0u);
+}
+
 // Triangle's rule: with hole points, a loop with no hole point inside is an interface between
 // the region inside and the one around; both are meshed, sharing the nodes on it.
 TEST(Quadtree_mesher_2, an_inclusion_is_meshed_on_both_sides_sharing_its_nodes)

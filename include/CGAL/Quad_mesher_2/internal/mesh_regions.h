@@ -134,23 +134,29 @@ void assign_regions(Quad_mesh_2<typename K::Point_2>& mesh, const Domain_2<K>& d
     return q;
   };
   std::vector<std::size_t> region_of_quad(mesh.quads.size(), none);
+  // a half-edge is inner where another quad has it the other way round (as
+  // marked_boundary_edges() has it): its two quads join, or face each other across an interface
   std::vector<char> on_boundary(4 * mesh.quads.size(), 1); // by 4 quad + corner
-  for(std::size_t i = 0; i + 1 < half_edges.size(); ++i) {
-    const auto& e = half_edges[i];
-    const auto& f = half_edges[i + 1];
-    if(f[0] != e[0] || f[1] != e[1]) continue;
-    ++i;
-    on_boundary[4 * e[2] + e[3]] = on_boundary[4 * f[2] + f[3]] = 0;
-    const std::size_t loop = interfaces.loop_on_the_right(mesh.quads[e[2]][e[3]], mesh.quads[e[2]][(e[3] + 1) % 4]);
-    if(loop == none) {
-      piece[find(e[2])] = find(f[2]);
-      continue;
-    }
-    region_of_quad[e[2]] = output_region[loops.loops[loop].region];
-    region_of_quad[f[2]] = output_region[loops.loops[loops.loops[loop].twin].region];
+  auto source = [&](const std::array<std::size_t, 4>& e) { return mesh.quads[e[2]][e[3]]; };
+  for(std::size_t i = 0, j = 0; i < half_edges.size(); i = j) {
+    while(j < half_edges.size() && half_edges[j][0] == half_edges[i][0] && half_edges[j][1] == half_edges[i][1]) ++j;
+    for(std::size_t x = i; x < j; ++x)
+      for(std::size_t y = x + 1; y < j; ++y) {
+        const auto& e = half_edges[x];
+        const auto& f = half_edges[y];
+        if(source(e) == source(f) || e[2] == f[2]) continue;
+        on_boundary[4 * e[2] + e[3]] = on_boundary[4 * f[2] + f[3]] = 0;
+        const std::size_t loop = interfaces.loop_on_the_right(source(e), source(f));
+        if(loop == none) {
+          piece[find(e[2])] = find(f[2]);
+          continue;
+        }
+        region_of_quad[e[2]] = output_region[loops.loops[loop].region];
+        region_of_quad[f[2]] = output_region[loops.loops[loops.loops[loop].twin].region];
+      }
   }
   std::size_t boundary_edge = 0;
-  for(std::size_t k = 0; k < on_boundary.size(); ++k)
+  for(std::size_t k = 0; k < on_boundary.size() && boundary_edge < edge_loops.size(); ++k)
     if(on_boundary[k]) region_of_quad[k / 4] = output_region[loops.loops[edge_loops[boundary_edge++]].region];
   std::vector<std::size_t> region_of_piece(mesh.quads.size(), none);
   for(std::size_t q = 0; q < mesh.quads.size(); ++q)
