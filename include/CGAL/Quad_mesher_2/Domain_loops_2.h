@@ -616,6 +616,14 @@ Domain_loops_2<K> extract_loops(const Domain_2<K>& domain, const K& traits = K()
 
 namespace internal {
 
+/// whether any loop of `loops` is an interface (has a twin)
+template <class K>
+bool has_interfaces(const Domain_loops_2<K>& loops)
+{
+  return std::any_of(loops.loops.begin(), loops.loops.end(),
+                     [](const Boundary_loop_2<K>& loop) { return loop.twin != std::size_t(-1); });
+}
+
 /// the sum of the signed areas of the loops `take(loop)` picks, in `FT`
 template <class K, class Take>
 typename K::FT loops_area(const Domain_2<K>& domain, const Domain_loops_2<K>& loops, Take take, const K& traits)

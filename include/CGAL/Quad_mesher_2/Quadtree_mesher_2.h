@@ -1016,7 +1016,7 @@ private:
     for(std::size_t v = 0; v < xy.size(); ++v) pinned[v] = !std::isnan(angle[v]);
     for(std::size_t v : m_point_vertices)
       if(v < pinned.size()) pinned[v] = 1;
-    if(has_interfaces()) {
+    if(internal::has_interfaces(m_loops)) {
       const double on = 1e-10 * locator.diagonal();
       for(std::size_t v = 0; v < xy.size(); ++v) {
         const internal::Loop_locator::Hit h = locator.closest(xy[v], on);
@@ -1024,12 +1024,6 @@ private:
       }
     }
     return pinned;
-  }
-
-  bool has_interfaces() const
-  {
-    return std::any_of(m_loops.loops.begin(), m_loops.loops.end(),
-                       [](const Boundary_loop_2<GeomTraits>& loop) { return loop.twin != std::size_t(-1); });
   }
 
   double box_diagonal() const

@@ -44,8 +44,7 @@ public:
 
   Interface_sides(const Quad_mesh_2<typename K::Point_2>& mesh, const Domain_2<K>& domain, const Domain_loops_2<K>& loops)
     : m_mesh(mesh),
-      m_has_interfaces(std::any_of(loops.loops.begin(), loops.loops.end(),
-                                   [](const Boundary_loop_2<K>& loop) { return loop.twin != none; }))
+      m_has_interfaces(has_interfaces(loops))
   {
     if(!m_has_interfaces) return;
     m_locator = make_loop_locator(domain, loops);
