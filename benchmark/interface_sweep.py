@@ -18,7 +18,6 @@ inputs that do not pass into OUT_DIR/failing/. Needs Debian's python3-numpy,
 python3-shapely (and the verifier's python3-scipy and python3-meshio); run with
 /usr/bin/python3.
 """
-import argparse
 import os
 import sys
 
@@ -62,38 +61,9 @@ def write_inclusions(out_dir, seed, index, kinds):
     return path, made
 
 
-def sweep_one(args, index):
-    """Draws, meshes and verifies domain `index`: its CSV row."""
-    poly, made = write_inclusions(args.out_dir, args.seed, index, args.kinds)
-    status, lines, seconds = random_sweep.run_mesher(args.mesher, poly, args.timeout)
-    mesh_written = os.path.exists(poly[:-len('.poly')] + '.msh')
-    report = (random_sweep.run_verifier(args.verifier, poly, ['--excuse-above', '360'], args.verify_timeout)
-              if mesh_written else {})
-    outcome = random_sweep.outcome_of(status, report)
-    if outcome == 'PASS' and not args.keep_meshes:
-        random_sweep.remove_if_there(poly[:-len('.poly')] + '.msh')
-    return dict(made, file=os.path.basename(poly), outcome=outcome, exit='' if status is None else status,
-                seconds='%.3f' % seconds, quads=report.get('n_quads', ''),
-                mesher_unforced_quads=random_sweep.mesher_unforced_quads(poly),
-                verifier_unexcused_angles=report.get('n_angles_outside_45_135_unexcused', ''),
-                failed_checks=' '.join(report.get('failed_checks', [])), message=lines[-1] if lines else '')
-
-
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
-    random_sweep.add_sweep_arguments(parser, timeout=60)
-    random_domains.add_domain_arguments(parser)
-    args = parser.parse_args()
-    rows = random_sweep.sweep(args, sweep_one)
-    random_sweep.write_results(rows, args.out_dir, CSV_FIELDS)
-    if not rows:
-        return 0
-    print()
-    random_sweep.print_table(rows, 'kind', 'kind')
-    print()
-    random_sweep.print_table(rows, 'corner_class', 'corners')
-    random_sweep.print_messages(rows)
-    return 0
+    return random_sweep.sweep_written_domains(__doc__, write_inclusions, CSV_FIELDS,
+                                              [('kind', 'kind'), ('corner_class', 'corners')])
 
 
 if __name__ == '__main__':

@@ -416,23 +416,27 @@ def description(made):
             'attempt %(attempt)d' % made)
 
 
-def write_poly(path, loops, points, comments):
+def write_poly(path, loops, points, comments, polylines=()):
     """Triangle's .poly: the comment lines, then 1-based vertices (%.17g) and segments with
-    marker = loop id, then the hole points."""
+    marker = loop id (the open `polylines`, cracks, numbered after the loops), then the hole
+    points."""
+    chains = [(loop, True) for loop in loops] + [(line, False) for line in polylines]
     with open(path, 'w') as out:
         out.write(''.join('# %s\n' % line for line in comments))
-        out.write('%d 2 0 1\n' % sum(len(loop) for loop in loops))
+        out.write('%d 2 0 1\n' % sum(len(chain) for chain, _ in chains))
         k = 1
-        for marker, loop in enumerate(loops, 1):
-            for x, y in loop:
+        for marker, (chain, _) in enumerate(chains, 1):
+            for x, y in chain:
                 out.write('%d %.17g %.17g %d\n' % (k, x, y, marker))
                 k += 1
-        out.write('%d 1\n' % (k - 1))
+        out.write('%d 1\n' % (k - 1 - len(polylines)))
         k = 1
-        for marker, loop in enumerate(loops, 1):
-            for i in range(len(loop)):
-                out.write('%d %d %d %d\n' % (k + i, k + i, k + (i + 1) % len(loop), marker))
-            k += len(loop)
+        s = 1
+        for marker, (chain, closed) in enumerate(chains, 1):
+            for i in range(len(chain) if closed else len(chain) - 1):
+                out.write('%d %d %d %d\n' % (s, k + i, k + (i + 1) % len(chain), marker))
+                s += 1
+            k += len(chain)
         out.write('%d\n' % len(points))
         for i, (x, y) in enumerate(points, 1):
             out.write('%d %.17g %.17g\n' % (i, x, y))

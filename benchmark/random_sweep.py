@@ -123,10 +123,16 @@ def mesher_unforced_quads(poly):
 def sweep_one(args, index):
     """Draws, meshes and verifies domain `index`: its CSV row."""
     poly, made = random_domains.write_domain(args.out_dir, args.seed, index, args.kinds)
+    return mesh_and_verify(args, poly, made, args.excuse_above)
+
+
+def mesh_and_verify(args, poly, made, excuse_above=360):
+    """Meshes `poly` and verifies the mesh written (`--excuse-above`): its CSV row, `made` and the
+    run's outcome. A passing mesh is removed unless args.keep_meshes."""
     status, lines, seconds = run_mesher(args.mesher, poly, args.timeout)
     message = lines[-1] if lines else ''
     mesh_written = os.path.exists(poly[:-len('.poly')] + '.msh')
-    report = (run_verifier(args.verifier, poly, ['--excuse-above', str(args.excuse_above)], args.verify_timeout)
+    report = (run_verifier(args.verifier, poly, ['--excuse-above', str(excuse_above)], args.verify_timeout)
               if mesh_written else {})
     outcome = outcome_of(status, report)
     if status is not None and status < 0:
@@ -201,6 +207,36 @@ def add_sweep_arguments(parser, timeout):
     parser.add_argument('--keep-meshes', action='store_true', help='keep the meshes of passing runs too')
 
 
+def sweep_and_report(args, one, fields, tables):
+    """sweep(args, one), its rows written (write_results()) and printed: a table per (key, title)
+    of `tables`, then the refusals by message."""
+    rows = sweep(args, one)
+    write_results(rows, args.out_dir, fields)
+    if not rows:
+        return rows
+    for key, title in tables:
+        print()
+        print_table(rows, key, title)
+    print_messages(rows)
+    return rows
+
+
+def sweep_written_domains(doc, write, fields, tables, timeout=60):
+    """The main of a sweep over domains that `write(out_dir, seed, index, kinds)` draws and writes
+    (returning the .poly's path and how it was made): its arguments read as add_sweep_arguments()
+    and random_domains.add_domain_arguments() define them, `doc` the help's first line."""
+    parser = argparse.ArgumentParser(description=doc.split('\n')[0])
+    add_sweep_arguments(parser, timeout)
+    random_domains.add_domain_arguments(parser)
+    args = parser.parse_args()
+
+    def one(args, index):
+        poly, made = write(args.out_dir, args.seed, index, args.kinds)
+        return mesh_and_verify(args, poly, made)
+    sweep_and_report(args, one, fields, tables)
+    return 0
+
+
 def sweep(args, one):
     """one(args, index) for the domains 0 to args.count - 1 on args.jobs threads, in order; prints
     each run that does not pass as it ends. Returns the rows."""
@@ -221,15 +257,9 @@ def main():
     parser.add_argument('--excuse-above', type=float, default=360,
                         help="the verifier's --excuse-above: 360 excuses no reflex corner (default)")
     args = parser.parse_args()
-    rows = sweep(args, sweep_one)
-    write_results(rows, args.out_dir)
+    rows = sweep_and_report(args, sweep_one, CSV_FIELDS, [('kind', 'kind'), ('feature', 'feature')])
     if not rows:
         return 0
-    print()
-    print_table(rows, 'kind', 'kind')
-    print()
-    print_table(rows, 'feature', 'feature')
-    print_messages(rows)
     print('per-domain results: %s; failing inputs: %s'
           % (os.path.join(args.out_dir, 'results.csv'), os.path.join(args.out_dir, 'failing')))
     return 0

@@ -520,6 +520,26 @@ TEST(CurveDecomposition, AnInterfaceIsDecomposedOnce)
   EXPECT_EQ(r.segments.size(), r.points.size());
 }
 
+TEST(CurveDecomposition, ACrackKeepsItsSegments)
+{
+  Domain d;
+  add_loop(d, ellipse(12, 10, 10, true));
+  const std::size_t first = d.points.size();
+  d.points.insert(d.points.end(), { Point_2(-3, 0), Point_2(0, 1), Point_2(3, 0) });
+  d.segments.push_back({ first + 1, first + 2 });
+  d.segments.push_back({ first, first + 1 });
+  d.segment_markers.assign(d.segments.size(), 1);
+  d.segment_markers.back() = 7;
+  const Domain r = CGAL::Quad_mesher_2::decompose_domain_curves<K>(d, Options());
+  const CGAL::Quad_mesher_2::Domain_loops_2<K> loops = CGAL::Quad_mesher_2::extract_loops(r);
+  ASSERT_EQ(loops.loops.size(), 2u); // the outer loop, then the crack
+  EXPECT_EQ(loops.loops[1].twin, 1u);
+  EXPECT_EQ(loops.loops[1].vertices, (std::vector<std::size_t>{ first, first + 1, first + 2, first + 1 }));
+  ASSERT_EQ(r.segment_markers.size(), r.segments.size());
+  EXPECT_EQ(r.segment_markers[r.segments.size() - 2], 7); // the crack's first segment, as given
+  EXPECT_EQ(r.segment_labels.back(), "on the crack from " + std::to_string(first + 1) + " to " + std::to_string(first + 2));
+}
+
 TEST(CurveDecomposition, DegenerateInputsAreNamed)
 {
   const Options o;

@@ -213,13 +213,75 @@ TEST(Domain_loops_2, ExampleLakeSuperior)
   EXPECT_GT(area_of(d, loops), 0);
 }
 
-TEST(Domain_loops_2, SharedMultiRegionInputsAreRejected)
+TEST(Domain_loops_2, the_shared_butterflys_junction_is_rejected_and_the_faces_cracks_are_loops)
 {
   const std::string base = QM2_SHARED_DATA_DIR;
   const Domain butterfly = load(base + "/cgal_butterfly/cgal_butterfly.poly");
   QM2_EXPECT_ERROR(butterfly, "is shared by", "may not touch or branch", "vertex ");
+  // face: an outer loop, three holes and two cracks (single segments), two isolated points
   const Domain face = load(base + "/face/face.poly");
-  QM2_EXPECT_ERROR(face, "is the end of only one segment", "dangling", "vertex ");
+  const Loops loops = extract_loops(face);
+  ASSERT_EQ(loops.loops.size(), 6u);
+  std::size_t cracks = 0;
+  for(std::size_t l = 0; l < loops.loops.size(); ++l)
+    if(loops.loops[l].twin == l) {
+      ++cracks;
+      EXPECT_EQ(loops.loops[l].vertices.size(), 2u);
+      EXPECT_FALSE(loops.loops[l].is_outer);
+    }
+  EXPECT_EQ(cracks, 2u);
+  EXPECT_EQ(loops.isolated_points, (std::vector<std::size_t>{ 24, 25 }));
+}
+
+// A polyline with free ends is a crack: the hole loop along it and back, enclosing nothing,
+// its own twin; it adds no area and leaves the other loops' nesting as it was.
+TEST(Domain_loops_2, a_polyline_with_free_ends_is_a_crack_its_own_twin)
+{
+  Domain d;
+  add_square(d, 0, 0, 10, 10);
+  d.points.insert(d.points.end(), { Point_2(2, 2), Point_2(5, 5), Point_2(8, 4), Point_2(7, 8) }); // 4 .. 7
+  d.segments.insert(d.segments.end(), { { 5, 6 }, { 4, 5 }, { 7, 6 } }); // in no order
+  d.points.insert(d.points.end(), { Point_2(1, 8), Point_2(3, 9) }); // 8, 9: one segment
+  d.segments.push_back({ 9, 8 });
+  add_square(d, 4, 0.5, 6, 2.5); // a hole below the polyline, with a hole point
+  d.holes.push_back(Point_2(5, 1));
+  const Loops loops = extract_loops(d);
+  ASSERT_EQ(loops.loops.size(), 4u);
+  EXPECT_EQ(loops.loops[0].twin, std::size_t(-1));
+  // along the polyline from an end (found from its lowest segment) and back
+  EXPECT_EQ(loops.loops[1].vertices, (std::vector<std::size_t>{ 4, 5, 6, 7, 6, 5 }));
+  EXPECT_EQ(loops.loops[2].vertices, (std::vector<std::size_t>{ 9, 8 }));
+  for(std::size_t l : { 1u, 2u }) {
+    EXPECT_EQ(loops.loops[l].twin, l);
+    EXPECT_FALSE(loops.loops[l].is_outer);
+    EXPECT_EQ(loops.loops[l].region, 0u);
+    EXPECT_EQ(loops.loops[l].depth, 1);
+  }
+  EXPECT_FALSE(loops.loops[3].is_outer);
+  EXPECT_EQ(loops.loops[3].twin, std::size_t(-1));
+  EXPECT_EQ(CGAL::Quad_mesher_2::domain_area(d, loops), 100 - 4);
+  // a crack's edges take their segments' markers, one number for the loop by default
+  const std::vector<std::vector<int>> markers = CGAL::Quad_mesher_2::internal::loop_edge_markers(d, loops);
+  EXPECT_EQ(markers[1], std::vector<int>(6, 2));
+  EXPECT_EQ(markers[2], std::vector<int>(2, 3));
+  EXPECT_EQ(markers[3], std::vector<int>(4, 4));
+}
+
+TEST(Domain_loops_2, a_crack_outside_the_domain_is_an_error_naming_it)
+{
+  Domain d;
+  add_square(d, 0, 0, 10, 10);
+  add_square(d, 2, 2, 8, 8);
+  d.holes.push_back(Point_2(3, 3));
+  d.points.insert(d.points.end(), { Point_2(4, 4), Point_2(6, 5) });
+  d.segments.push_back({ 8, 9 });
+  QM2_EXPECT_ERROR(d, "the open polyline of 1 segment from vertex 8 (4, 4) to vertex 9 (6, 5) (segment 8) lies inside",
+                   "which bounds a hole there: a polyline with free ends is a crack, which must lie in the domain");
+  Domain crossing;
+  add_square(crossing, 0, 0, 10, 10);
+  crossing.points.insert(crossing.points.end(), { Point_2(5, 5), Point_2(12, 5) });
+  crossing.segments.push_back({ 4, 5 });
+  QM2_EXPECT_ERROR(crossing, "cross");
 }
 
 TEST(Domain_loops_2, BahamasTiming)
@@ -547,7 +609,8 @@ TEST(Domain_loops_2, ErrorDanglingSegment)
   Domain d;
   d.points = {Point_2(0, 0), Point_2(1, 0), Point_2(1, 1), Point_2(0, 1)};
   d.segments = {{0, 1}, {1, 2}, {2, 3}};
-  QM2_EXPECT_ERROR(d, "vertex 0 (0, 0) is the end of only one segment (segment 0)", "not closed");
+  QM2_EXPECT_ERROR(d, "the open polyline of 3 segments from vertex 0 (0, 0) to vertex 3 (0, 1) (segment 0) lies outside "
+                      "every boundary loop: a polyline with free ends is a crack, which must lie in the domain");
 
   Domain tail;
   add_square(tail, 0, 0, 4, 4);

@@ -24,6 +24,7 @@
 #include <cstdio>
 #include <map>
 #include <random>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -694,6 +695,71 @@ TEST(Quadtree_mesher_2, a_sharp_interface_corner_is_named_where_angles_stay_out)
     EXPECT_NE(std::string(e.what()).find("input point 5 (6, 5) is a corner of 15 degrees on an interface"), std::string::npos)
       << e.what();
   }
+}
+
+// Every segment of `polyline` is a chain of mesh edges from vertex to vertex, each edge with a
+// quad on either side (the two sides of a crack share its nodes).
+::testing::AssertionResult crack_is_an_edge_chain(const QM::Quad_mesh_2<K::Point_2>& mesh,
+                                                  const std::vector<K::Point_2>& polyline)
+{
+  const ::testing::AssertionResult conforming = qm2_checks::is_conforming(mesh);
+  if(!conforming) return conforming;
+  std::set<std::pair<std::size_t, std::size_t>> directed_edges;
+  for(const auto& q : mesh.quads)
+    for(int c = 0; c < 4; ++c) directed_edges.insert({ q[c], q[(c + 1) % 4] });
+  for(std::size_t k = 0; k + 1 < polyline.size(); ++k) {
+    const K::Segment_2 ab(polyline[k], polyline[k + 1]);
+    const double tolerance = 1e-20 * CGAL::to_double(ab.squared_length()); // Epick's points on it, to rounding
+    std::vector<std::pair<double, std::size_t>> on; // along a -> b
+    for(std::size_t v = 0; v < mesh.points.size(); ++v)
+      if(CGAL::to_double(CGAL::squared_distance(ab, mesh.points[v])) <= tolerance)
+        on.emplace_back(CGAL::to_double(CGAL::squared_distance(ab.source(), mesh.points[v])), v);
+    std::sort(on.begin(), on.end());
+    if(on.size() < 2 || mesh.points[on.front().second] != ab.source() || mesh.points[on.back().second] != ab.target())
+      return ::testing::AssertionFailure() << "segment " << k << " of the crack does not end at mesh vertices";
+    for(std::size_t j = 0; j + 1 < on.size(); ++j)
+      if(!directed_edges.count({ on[j].second, on[j + 1].second }) || !directed_edges.count({ on[j + 1].second, on[j].second }))
+        return ::testing::AssertionFailure() << "segment " << k << " of the crack is not a chain of inner mesh edges";
+  }
+  return ::testing::AssertionSuccess();
+}
+
+// Triangle's rule: a polyline with free ends inside the domain is a crack, kept as mesh edges
+// with quads on either side sharing its nodes; its tips are corners of 360 degrees, so every
+// angle stays within [45, 135].
+TEST(Quadtree_mesher_2, a_crack_is_a_chain_of_mesh_edges_with_quads_on_either_side)
+{
+  const std::vector<std::vector<K::Point_2>> cracks = {
+    { K::Point_2(3, 4), K::Point_2(7, 6) },
+    { K::Point_2(2, 2), K::Point_2(5, 5), K::Point_2(8, 4), K::Point_2(7, 8) }, // kinked at 117 and 57.5 degrees
+  };
+  for(const auto& crack : cracks) {
+    SCOPED_TRACE(crack.size());
+    Domain d = qm2_test::polygons({ qm2_test::rectangle(0, 0, 10, 10) });
+    for(std::size_t k = 0; k < crack.size(); ++k) {
+      d.points.push_back(crack[k]);
+      if(k > 0) d.segments.push_back({ d.points.size() - 2, d.points.size() - 1 });
+    }
+    const QM::Quad_mesh_2<K::Point_2> mesh = Mesher(d).run();
+    EXPECT_TRUE(crack_is_an_edge_chain(mesh, crack));
+    expect_angles_within_45_135(mesh);
+    EXPECT_EQ(QM::compute_quality(mesh).number_of_boundary_loops, 1u); // the square's only
+  }
+}
+
+// The shared case `face`: three holes, two cracks and two isolated points.
+TEST(Quadtree_mesher_2, the_shared_face_keeps_its_cracks_and_isolated_points)
+{
+  Domain d;
+  std::string error;
+  ASSERT_TRUE(QM::IO::read_poly(std::string(QM2_SHARED_DATA_DIR) + "/face/face.poly", d, &error)) << error;
+  const QM::Quad_mesh_2<K::Point_2> mesh = Mesher(d).run();
+  EXPECT_TRUE(crack_is_an_edge_chain(mesh, { d.points[20], d.points[21] }));
+  EXPECT_TRUE(crack_is_an_edge_chain(mesh, { d.points[22], d.points[23] }));
+  for(std::size_t v : { 24u, 25u })
+    EXPECT_NE(std::find(mesh.points.begin(), mesh.points.end(), d.points[v]), mesh.points.end()) << v;
+  expect_angles_within_45_135(mesh);
+  EXPECT_EQ(QM::compute_quality(mesh).number_of_boundary_loops, 4u);
 }
 
 TEST(Quadtree_mesher_2, stage_timings_are_recorded)

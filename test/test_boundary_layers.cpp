@@ -335,6 +335,29 @@ TEST(Boundary_layers, an_interface_is_no_wall)
   }
 }
 
+// A crack has the domain on both sides too: the hole is the wall, the crack keeps its
+// segments (the offset domain takes them once, along the crack), and wall markers on it are
+// refused by name.
+TEST(Boundary_layers, a_crack_is_no_wall)
+{
+  QM::Domain_2<K> d = qm2_test::polygons({ qm2_test::rectangle(0, 0, 10, 10), qm2_test::rectangle(4, 4, 6, 6) },
+                                         { Point_2(5, 5) });
+  d.points.insert(d.points.end(), { Point_2(1, 1), Point_2(3, 1.5), Point_2(2.5, 3) });
+  d.segments.push_back({ 8, 9 });
+  d.segments.push_back({ 9, 10 });
+  d.segment_markers = { 1, 1, 1, 1, 2, 2, 2, 2, 3, 3 };
+  const Layered l = mesh_with_layers(d, 3, 1e-2, 1.2, { 2 });
+  expect_valid_with_angles(l, 45);
+  ASSERT_EQ(l.report.walls.size(), 1u);
+  EXPECT_EQ(l.report.walls[0].marker, 2);
+  try {
+    mesh_with_layers(d, 3, 1e-2, 1.2, { 3 });
+    ADD_FAILURE() << "a crack was taken for a wall";
+  } catch(const QM::Meshing_error& e) {
+    EXPECT_NE(std::string(e.what()).find("is a crack, not a wall"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Boundary_layers, bad_values_are_clear_errors)
 {
   EXPECT_THROW(QM::Boundary_layer_criteria_2(0, 1e-3, 1.2), QM::Meshing_error);

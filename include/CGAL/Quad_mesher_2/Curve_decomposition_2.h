@@ -574,6 +574,20 @@ inline void curves_check_options(const Curve_decomposition_options& o)
                         "diagonal), got " + loops_format_double(o.max_chord_error));
 }
 
+/// Copies the segments of crack `loop` (an open polyline, see `Boundary_loop_2::twin`) into
+/// `out` with their markers: the decomposition rounds closed loops only.
+template <class K>
+void curves_keep_crack(const Domain_2<K>& domain, const Boundary_loop_2<K>& loop, const std::vector<int>& markers,
+                       Domain_2<K>& out)
+{
+  const std::vector<std::size_t>& v = loop.vertices;
+  for(std::size_t k = 0; k < v.size() / 2; ++k) { // along the polyline, not back
+    out.segments.push_back({ v[k], v[k + 1] });
+    out.segment_labels.push_back("on the crack from " + domain.point_label(v[k]) + " to " + domain.point_label(v[k + 1]));
+    if(!domain.segment_markers.empty()) out.segment_markers.push_back(markers[k]);
+  }
+}
+
 } // namespace internal
 
 /// \ingroup PkgQuadMesher2Ref
@@ -631,6 +645,9 @@ std::vector<typename K::Point_2> decompose_closed_spline(const std::vector<typen
 /// 1e-3 of the diagonal of the bounding box of all the domain's points, so that every loop is
 /// held to the same absolute error.
 ///
+/// A crack (an open polyline, see `Boundary_loop_2::twin`) keeps its segments as they are,
+/// labelled `on the crack from 1 (line 2) to 2 (line 3)`.
+///
 /// The result is validated with `extract_loops()`: each spline alone must be simple, and the
 /// splines must not cross one another or pass over a hole point or a point on no segment
 /// (possible where the curve bulges beyond its control polygon).
@@ -663,6 +680,10 @@ Domain_2<K> decompose_domain_curves(const Domain_2<K>& domain, const Curve_decom
   for(std::size_t l = 0; l < loops.loops.size(); ++l) {
     const Boundary_loop_2<K>& loop = loops.loops[l];
     if(loop.twin < l) continue; // an interface is one curve, decomposed from its first side
+    if(loop.twin == l) { // a crack is no closed curve: its segments stay as they are
+      internal::curves_keep_crack(domain, loop, edge_markers[l], out);
+      continue;
+    }
     std::vector<typename K::Point_2> control;
     std::vector<std::string> control_labels;
     control.reserve(loop.vertices.size());

@@ -53,7 +53,9 @@ struct Boundary_loop_2
   /// the index of its twin, the loop of the same vertices in the opposite order that bounds
   /// the region on the other side; `std::size_t(-1)` for a loop of the domain's boundary.
   /// The twin of an interface's outer loop (counterclockwise, the region inside) is the
-  /// hole loop of the region around it, listed right after it.
+  /// hole loop of the region around it, listed right after it. A crack (an open polyline
+  /// v0 ... vk inside the domain) is the hole loop v0 ... vk ... v1 that runs along it and back,
+  /// enclosing nothing: the domain is on both of its sides, and it is its own twin.
   std::size_t twin = std::size_t(-1);
 };
 
@@ -155,7 +157,8 @@ public:
       // Domain on the left: an outer loop must turn left (CCW), a hole right (CW).
       if(m_ccw[l] != loop.is_outer) std::reverse(loop.vertices.begin() + 1, loop.vertices.end());
       out.loops.push_back(loop);
-      if(!m_interface[l]) continue;
+      if(m_crack[l]) out.loops.back().twin = out.loops.size() - 1;
+      if(!m_interface[l] || m_crack[l]) continue;
       // the hole of the region around it, in the opposite direction from the same first vertex
       loop.is_outer = false;
       loop.region = m_region[m_parent[l]];
@@ -179,6 +182,11 @@ private:
   }
   std::string loop_str(std::size_t l) const
   {
+    if(m_crack[l])
+      return "the open polyline of " + std::to_string(m_loops[l].size() / 2) +
+             (m_loops[l].size() == 2 ? " segment from " : " segments from ") + vtx(m_loops[l][0]) +
+             " to " + vtx(m_loops[l][m_loops[l].size() / 2]) + " (segment " +
+             m_d.segment_label(m_loop_first_segment[l]) + ")";
     return "the loop of " + std::to_string(m_loops[l].size()) + " vertices starting at " + vtx(m_loops[l][0]) +
            " (segment " + m_d.segment_label(m_loop_first_segment[l]) + ")";
   }
@@ -225,15 +233,12 @@ private:
         throw Meshing_error("a loop with fewer than 3 vertices (a repeated segment): " + both);
       throw Meshing_error("repeated segment: " + both);
     }
-    // Degrees: every vertex on a segment must have exactly two.
+    // Degrees: every vertex on a segment has two, or one at the end of a crack.
     for(std::size_t v = 0; v < np; ++v) {
-      if(m_degree[v] == 0 || m_degree[v] == 2) continue;
+      if(m_degree[v] <= 2) continue;
       std::string segs;
       for(std::size_t s = 0; s < ns; ++s)
         if(m_d.segments[s][0] == v || m_d.segments[s][1] == v) segs += (segs.empty() ? "" : ", ") + m_d.segment_label(s);
-      if(m_degree[v] == 1)
-        throw Meshing_error(vtx(v) + " is the end of only one segment (segment " + segs +
-                            "): the boundary is not closed there (an open loop or a dangling segment)");
       throw Meshing_error(vtx(v) + " is shared by " + std::to_string(m_degree[v]) + " segments (" + segs +
                           "): boundary loops may not touch or branch; every vertex on a segment must have exactly two");
     }
@@ -253,16 +258,25 @@ private:
     for(std::size_t s0 = 0; s0 < ns; ++s0) {
       if(m_loop_of_segment[s0] != none) continue;
       const std::size_t l = m_loops.size();
+      std::size_t s = s0, v = m_d.segments[s0][0];
+      const bool crack = walk_to_crack_end(inc, s, v);
+      const std::size_t start = v;
       std::vector<std::size_t> verts;
-      const std::size_t start = m_d.segments[s0][0];
-      std::size_t s = s0, v = start;
       do {
         m_loop_of_segment[s] = l;
         verts.push_back(v);
         const auto& sg = m_d.segments[s];
         v = (sg[0] == v) ? sg[1] : sg[0];
         s = (inc[v][0] == s) ? inc[v][1] : inc[v][0];
-      } while(v != start);
+      } while(v != start && s != none);
+      m_crack.push_back(crack);
+      if(crack) { // along the polyline and back: v0 ... vk ... v1
+        verts.push_back(v);
+        for(std::size_t k = verts.size() - 2; k > 0; --k) verts.push_back(verts[k]);
+        m_loops.push_back(std::move(verts));
+        m_loop_first_segment.push_back(s0);
+        continue;
+      }
       if(verts.size() < 3) {
         std::string vs;
         for(std::size_t u : verts) vs += " " + vtx(u);
@@ -273,10 +287,27 @@ private:
     }
   }
 
+  // Walks from segment s back through v to the end of an open polyline (a vertex of one
+  // segment), leaving there s, its first segment, and v, its end; false, s and v unchanged,
+  // if s is on a closed loop.
+  bool walk_to_crack_end(const std::vector<std::array<std::size_t, 2> >& inc, std::size_t& s, std::size_t& v) const
+  {
+    std::size_t at = s, u = v;
+    do {
+      const std::size_t next = (inc[u][0] == at) ? inc[u][1] : inc[u][0];
+      if(next == none) { s = at; v = u; return true; }
+      at = next;
+      const auto& sg = m_d.segments[at];
+      u = (sg[0] == u) ? sg[1] : sg[0];
+    } while(at != s);
+    return false;
+  }
+
   // ---- 3. zero-area loops -----------------------------------------------------------------
   void check_degenerate_loops()
   {
     for(std::size_t l = 0; l < m_loops.size(); ++l) {
+      if(m_crack[l]) continue; // encloses nothing by design
       const auto& L = m_loops[l];
       const Point_2& a = m_d.points[L[0]];
       const Point_2& b = m_d.points[L[1]];  // differs from a: no zero-length segments
@@ -362,6 +393,8 @@ private:
     m_ccw.resize(m_loops.size());
     for(std::size_t l = 0; l < m_loops.size(); ++l) {
       const auto& L = m_loops[l];
+      m_ccw[l] = false; // a crack reads the same either way
+      if(m_crack[l]) continue;
       std::size_t k = 0;
       for(std::size_t i = 1; i < L.size(); ++i)
         if(less_xy(m_d.points[L[i]], m_d.points[L[k]])) k = i;
@@ -398,6 +431,7 @@ private:
         on_seg = s;
         return;
       }
+      if(m_crack[l]) return; // encloses nothing
       // Half-open rule: the segment counts if one end has x <= p.x and the other x > p.x.
       const bool spans = (ca != LARGER && cb == LARGER) || (cb != LARGER && ca == LARGER);
       if(!spans) return;
@@ -474,8 +508,12 @@ private:
     m_is_outer.resize(nl);
     m_interface.assign(nl, false);
     for(std::size_t l = 0; l < nl; ++l) {
+      if(m_crack[l]) m_in_domain[l] = false; // nothing lies inside it
       const bool inside = m_in_domain[l];
       const bool outside = m_in_domain[m_parent[l] == none ? nl : m_parent[l]];
+      if(m_crack[l] && !outside)
+        throw Meshing_error(loop_str(l) + " lies " + where_region(m_parent[l]) +
+                            ": a polyline with free ends is a crack, which must lie in the domain");
       m_interface[l] = inside && outside; // only with hole points: depth parity alternates
       if(!inside && !outside) {
         // Hole points on both sides (outside a top loop is the unbounded region): one of them
@@ -551,6 +589,7 @@ private:
   std::vector<bool> m_in_domain;
   std::vector<bool> m_is_outer;
   std::vector<bool> m_interface; // per loop: the domain on both sides
+  std::vector<bool> m_crack;     // per loop: an open polyline, along and back
   std::vector<std::size_t> m_region;  // per loop, the region it bounds
   std::size_t m_regions = 0;
 };
@@ -575,11 +614,13 @@ FT loops_balanced_sum(std::vector<FT> v)
 /// Validates the segments of `domain` and returns them as closed, oriented boundary loops,
 /// with the points that lie on no segment.
 ///
-/// **Semantics** (Triangle's, restricted to disjoint simple loops): every vertex on a segment
-/// must have exactly two segments, so the segments form closed loops, and no two segments may
-/// meet except consecutive ones at their shared vertex. The loops cut the plane into regions:
-/// the unbounded one, and for each loop the part inside it but outside the loops directly
-/// nested in it.
+/// **Semantics** (Triangle's, restricted to disjoint simple loops and cracks): every vertex on
+/// a segment must have two segments, or one at a free end, so the segments form closed loops
+/// and open polylines, and no two segments may meet except consecutive ones at their shared
+/// vertex. The loops cut the plane into regions: the unbounded one, and for each loop the part
+/// inside it but outside the loops directly nested in it. An open polyline is a crack: it must
+/// lie in the domain, and it is returned as a hole loop along it and back (v0 ... vk ... v1),
+/// its own twin (`Boundary_loop_2::twin`), which encloses nothing.
 /// - With hole points, a region is in the domain iff it is bounded and contains no hole point
 ///   (Triangle's rule). A loop with the domain on both sides is an interface between two
 ///   regions: it is returned twice, as the outer loop of the region inside it and, right
@@ -599,8 +640,8 @@ FT loops_balanced_sum(std::vector<FT> v)
 ///
 /// \throws Meshing_error naming the problem, with 0-based indices and coordinates, for: a
 /// segment index out of range; a zero-length segment; a repeated segment; a loop of fewer
-/// than 3 vertices; a vertex with one segment (open loop, dangling segment) or with more than
-/// two (touching or branching loops); a loop whose vertices are all collinear; two segments
+/// than 3 vertices; a vertex with more than two segments (touching or branching loops); an
+/// open polyline outside the domain; a loop whose vertices are all collinear; two segments
 /// that cross, overlap, or touch (a vertex on another segment, or two vertices at the same
 /// place); a hole point on a segment or outside every loop; hole points on both sides of a
 /// loop (named by the one on the side nesting puts in the domain: inside a top loop, in an
@@ -693,7 +734,7 @@ std::vector<std::vector<int>> loop_edge_markers(const Domain_2<K>& domain, const
   int number = 0;
   for(std::size_t l = 0; l < loops.loops.size(); ++l) {
     const auto& v = loops.loops[l].vertices;
-    if(loops.loops[l].twin > l) ++number; // an interface's twin follows it: one number
+    if(loops.loops[l].twin >= l) ++number; // an interface's twin follows it: one number
     markers[l].assign(v.size(), number);
     if(by_ends.empty()) continue;
     for(std::size_t k = 0; k < v.size(); ++k) {

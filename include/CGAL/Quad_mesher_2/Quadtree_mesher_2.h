@@ -752,7 +752,8 @@ private:
       if(loop.twin == std::size_t(-1) || loop.twin < l) continue;
       for(std::size_t k = 0; k < loop.vertices.size(); ++k) {
         const double a = internal::loop_corner_angle(m_domain, loop, k);
-        if((std::min)(a, 360.0 - a) < 45.0) corners.emplace_back(loop.vertices[k], (std::min)(a, 360.0 - a));
+        // a crack's tip is a corner of 360 degrees, not of 0
+        if(a < 360.0 && (std::min)(a, 360.0 - a) < 45.0) corners.emplace_back(loop.vertices[k], (std::min)(a, 360.0 - a));
       }
     }
     return corners;

@@ -131,13 +131,15 @@ std::vector<Wall_offset> wall_loops(const Domain_2<K>& domain, const Domain_loop
     std::size_t on_wall = 0;
     for(int m : edge_markers[l])
       if(wanted.count(m) != 0) { ++on_wall; seen.insert(m); }
-    // an interface has the domain on both sides: no wall (a stack would face its own twin)
+    // an interface or a crack has the domain on both sides: no wall (a stack would face its
+    // own twin)
     const bool on_interface = loops.loops[l].twin != none;
     if(on_interface && on_wall > 0) {
       std::ostringstream msg;
       msg << "boundary layers: loop " << l + 1 << " (through input point "
           << domain.point_label(loops.loops[l].vertices.front())
-          << ") is an interface between two regions, not a wall: boundary layers on interfaces are not supported";
+          << (loops.loops[l].twin == l ? ") is a crack" : ") is an interface between two regions")
+          << ", not a wall: boundary layers on interfaces and cracks are not supported";
       throw Meshing_error(msg.str());
     }
     const bool is_wall = !on_interface && (markers.empty() ? (any_hole ? !loops.loops[l].is_outer : true) : on_wall > 0);
@@ -455,7 +457,8 @@ Domain_2<K> offset_domain(const Domain_2<K>& domain, const Domain_loops_2<K>& lo
   for(std::size_t l = 0; l < loops.loops.size(); ++l) {
     if(is_wall[l] != 0 || loops.loops[l].twin < l) continue; // an interface's segments once
     const auto& lv = loops.loops[l].vertices;
-    for(std::size_t e = 0; e < lv.size(); ++e) {
+    const std::size_t edges = loops.loops[l].twin == l ? lv.size() / 2 : lv.size(); // a crack along, not back
+    for(std::size_t e = 0; e < edges; ++e) {
       out.segments.push_back({ { index[lv[e]], index[lv[(e + 1) % lv.size()]] } });
       out.segment_markers.push_back(markers[l][e]);
     }

@@ -54,6 +54,7 @@ double loop_corner_angle(const Domain_2<K>& domain, const Boundary_loop_2<K>& lo
 {
   const std::vector<std::size_t>& lv = loop.vertices;
   const std::size_t nv = lv.size();
+  if(lv[(k + nv - 1) % nv] == lv[(k + 1) % nv]) return 360.0; // the tip of a crack
   return 360.0 - right_side_angle(to_point_2d(domain.points[lv[(k + nv - 1) % nv]]), to_point_2d(domain.points[lv[k]]),
                                   to_point_2d(domain.points[lv[(k + 1) % nv]]));
 }
@@ -449,6 +450,8 @@ public:
   {
     const auto& loop_xy = locator->loop(l);
     const std::size_t nv = loop_xy.size();
+    const auto& lv = loops.loops[l].vertices;
+    if(lv[(k + nv - 1) % nv] == lv[(k + 1) % nv]) return 360.0; // the tip of a crack
     return 360.0 - right_side_angle(loop_xy[(k + nv - 1) % nv], loop_xy[k], loop_xy[(k + 1) % nv]);
   }
 

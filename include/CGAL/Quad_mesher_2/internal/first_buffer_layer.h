@@ -263,6 +263,9 @@ private:
     const Point_2d& nb = m_zone.xy[cyc[(i + 1) % n]];
     const Loop_locator::Hit h = m_zone.locator->closest(b, 2 * m_zone.local_size[cyc[i]], l);
     const Vector_2d toward = normalized_2d(h.point - b);
+    // nearest a crack's tip: straight towards it, or F could land beside the crack's sides,
+    // which lie closer along the mean direction than the tip
+    if(at_crack_tip(l, h)) return b + 0.5 * (h.point - b);
     const Vector_2d bis = right_bisector(a, b, nb);
     Vector_2d d = normalized_2d(0.5 * (bis + toward));
     const double beta = right_side_angle(a, b, nb) * pi / 180;
@@ -275,6 +278,14 @@ private:
     const double c_dn = (std::max)(CGAL::scalar_product(d, toward), 0.5);
     const double lambda = 0.5 * h.dist / c_dn;
     return b + lambda * d;
+  }
+
+  // whether `h`, a closest point on loop l, is the tip of a crack (see Boundary_loop_2::twin)
+  bool at_crack_tip(std::size_t l, const Loop_locator::Hit& h) const
+  {
+    if(m_zone.loops.loops[l].twin != l || (h.t > 0 && h.t < 1)) return false;
+    const std::size_t nv = m_zone.loops.loops[l].vertices.size();
+    return m_zone.domain_angle(l, h.t == 0 ? h.edge : (h.edge + 1) % nv) == 360.0;
   }
 
   Buffer_zone<K>& m_zone;

@@ -84,7 +84,9 @@ public:
 
   /// the closest point to `p` on loop `l` (any loop if `l` is none), searching first within
   /// `radius` of `p` (with `other_than`: on any loop but `l` and its twin). Of equally near
-  /// edges the one of the lower loop index is found: of twins, the first.
+  /// edges the one of the lower loop index is found: of twins, the first. On a crack (a loop
+  /// that is its own twin), the side facing `p`: of an edge and its reverse, the one that has
+  /// `p` on its left.
   Hit closest(const Point_2d& p, double radius, std::size_t l = none, bool other_than = false) const
   {
     Hit best;
@@ -97,8 +99,7 @@ public:
         // equally near edges (a point on a symmetry axis) by their index, not by rounding:
         // the same choice on a scaled or moved domain
         const double tie = 1e-9 * m_diag;
-        if(h.dist < best.dist - tie
-           || (h.dist <= best.dist + tie && std::make_pair(h.loop, h.edge) < std::make_pair(best.loop, best.edge)))
+        if(h.dist < best.dist - tie || (h.dist <= best.dist + tie && tie_order(p, h) < tie_order(p, best)))
           best = h;
       });
       if(best.dist <= r || r > 4 * m_diag + 1e-300) return best;
@@ -140,6 +141,18 @@ public:
   static constexpr std::size_t none = std::size_t(-1);
 
 private:
+  // equally near edges by loop, then on a crack the side facing p first, then by index
+  std::array<std::size_t, 3> tie_order(const Point_2d& p, const Hit& h) const
+  {
+    if(h.dist == std::numeric_limits<double>::infinity()) return { none, none, none };
+    bool facing = true;
+    if(m_twin[h.loop] == h.loop) {
+      const auto& v = m_loops[h.loop];
+      facing = CGAL::determinant(v[(h.edge + 1) % v.size()] - v[h.edge], p - v[h.edge]) > 0;
+    }
+    return { h.loop, facing ? 0u : 1u, h.edge };
+  }
+
   Hit on_edge(const Point_2d& p, std::size_t l, std::size_t k) const
   {
     const auto& v = m_loops[l];

@@ -124,7 +124,7 @@ private:
     const Segment& here = m_segments[on];
     m_tree.query(Bbox_2(q.x() - r, q.y() - r, q.x() + r, q.y() + r), [&](std::size_t k) {
       const Segment& s = m_segments[k];
-      if(k == on)
+      if(k == on || meet_on_a_crack(s, here))
         return;
       // a corner's two sides: near the corner a wedge that no cell size resolves (the corner
       // quad of paper §5 fills it); farther out, an acute corner's sides face each other
@@ -160,10 +160,18 @@ private:
   }
 
   // Loops share no vertex, and each vertex is the target of one of its loop's segments and
-  // the source of the next.
+  // the source of the next (on a crack, twice: see meet_on_a_crack()).
   static bool consecutive(const Segment& s, const Segment& r)
   {
     return s.target_vertex == r.source_vertex || r.target_vertex == s.source_vertex;
+  }
+
+  // A crack's loop passes its inner vertices twice: segments that meet there without being
+  // consecutive are one side of the crack against the other, which face each other across
+  // nothing (its own twin) or across a corner of the crack (the corner quad's wedge).
+  static bool meet_on_a_crack(const Segment& s, const Segment& r)
+  {
+    return !consecutive(s, r) && (s.source_vertex == r.source_vertex || s.target_vertex == r.target_vertex);
   }
 
   // of two consecutive segments, the one whose source is their shared vertex

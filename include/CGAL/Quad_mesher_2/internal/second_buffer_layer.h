@@ -18,7 +18,8 @@
 // count is made even and how a long ladder switches between its two phases (a ladder can
 // only switch at a gap with an even number of G edges; without one it shears end to end).
 // An interface is built from its first side, which keeps every loop vertex; the strip on its
-// twin takes that chain as it is, so that both sides share its nodes.
+// twin takes that chain as it is, so that both sides share its nodes. A crack's strip is
+// paired freely first; then both of its sides take the nodes chosen on the first side.
 
 #ifndef CGAL_QUAD_MESHER_2_INTERNAL_SECOND_BUFFER_LAYER_H
 #define CGAL_QUAD_MESHER_2_INTERNAL_SECOND_BUFFER_LAYER_H
@@ -60,7 +61,8 @@ class Buffer_strip : Buffer_tolerances
     std::vector<std::size_t> fid, gid, g;
     std::vector<double> gparam;
   };
-  struct Strip_plan { bool ok = false; Strip_result best; std::vector<std::size_t> gid; };
+  // `odd`: not ok because a given chain leaves an odd count of triangles (see plan_on_chain())
+  struct Strip_plan { bool ok = false, odd = false; Strip_result best; std::vector<std::size_t> gid; };
   // where a gap's extra node lies: a loop vertex, or none, and its arclength
   struct Site { std::size_t vertex; double param; };
 
@@ -75,7 +77,9 @@ public:
   void build()
   {
     if(!m_projection.project()) return;
-    add_plan(on_interface_built_from_the_other_side() ? plan_on_twin_chain() : best_plan());
+    add_plan(on_interface_built_from_the_other_side() ? plan_on_twin_chain()
+             : on_crack()                             ? plan_on_crack()
+                                                      : best_plan());
   }
 
 private:
@@ -84,15 +88,101 @@ private:
   // its nodes (Second_buffer_layer builds the first sides first).
   bool on_interface_built_from_the_other_side() const { return m_zone.loops.loops[l].twin < l; }
 
+  // whether the cycle's loop is a crack, the loop along an open polyline and back (its own
+  // twin): its two sides must share their nodes
+  bool on_crack() const { return m_zone.loops.loops[l].twin == l; }
+
   // The pairing onto the chain the twin's strip made: each F point takes the chain node
   // nearest its projection (in order along the loop), with no node added or left out.
   Strip_plan plan_on_twin_chain()
   {
-    Strip_plan plan;
     const std::vector<std::size_t>& chain = m_zone.loop_chain[m_zone.loops.loops[l].twin];
-    if(chain.empty()) return plan; // not ok: the twin's strip failed
+    if(chain.empty()) return Strip_plan(); // not ok: the twin's strip failed
+    std::vector<std::pair<double, std::size_t>> by_param; // arclength, mesh id
+    for(std::size_t id : chain) {
+      const Loop_locator::Hit h = m_zone.locator->closest(m_zone.xy[id], 1e-9 * m_zone.locator->diagonal(), l);
+      by_param.emplace_back(m_zone.locator->param(h), id);
+    }
+    return plan_on_chain(std::move(by_param));
+  }
+
+  // A crack's strip: the pairing chooses the nodes along the polyline's first side (loop
+  // edges 0 to nv/2 - 1), and the other side takes them, mirrored, as the twin of an
+  // interface takes its chain (plan_on_twin_chain()).
+  Strip_plan plan_on_crack()
+  {
+    const Strip_plan free = best_plan();
+    if(!free.ok) return free;
+    const std::size_t half = nv / 2;
+    const Loop_locator& at = *m_zone.locator;
+    std::vector<std::pair<double, std::size_t>> by_param; // arclength, mesh id
+    for(std::size_t k = 0; k <= half; ++k) { // a crack keeps every vertex (candidate_nodes())
+      const std::size_t id = m_zone.input_vertex_point(l, k);
+      by_param.emplace_back(at.arc(l, k), id);
+      if(k > 0 && k < half) by_param.emplace_back(at.arc(l, nv - k), id); // the way back
+    }
+    for(std::size_t id : free.gid) // on edge e of the first side, and on its reverse nv - 1 - e
+      if(const auto* slide = m_zone.slide(id); slide != nullptr && slide->edge < half) {
+        const std::size_t e = slide->edge;
+        const double from_start = length_2d(m_zone.xy[id] - loop_xy[e]);
+        by_param.emplace_back(at.arc(l, e) + from_start, id);
+        by_param.emplace_back(at.arc(l, nv - 1 - e) + (at.arc(l, e + 1) - at.arc(l, e)) - from_start, id);
+      }
+    return plan_without_flat_crack_nodes(std::move(by_param));
+  }
+
+  // The pairing onto a crack's chain (plan_on_chain()); where a side's F point must fan over
+  // three chain nodes in a row (the other side, a reflex corner's, took more nodes there) and
+  // the middle one is no input vertex, that node leaves both sides and the strip is paired
+  // again, while that lowers its cost.
+  Strip_plan plan_without_flat_crack_nodes(std::vector<std::pair<double, std::size_t>> by_param)
+  {
+    Strip_plan plan = plan_on_chain(by_param);
+    for(int attempt = 0; attempt < 8 && plan.best.cost.sum >= 1e12; ++attempt) {
+      const std::vector<std::size_t> flat = middles_of_invalid_fans(plan);
+      if(flat.empty()) break;
+      std::vector<std::pair<double, std::size_t>> fewer;
+      for(const auto& node : by_param)
+        if(std::find(flat.begin(), flat.end(), node.second) == flat.end()) fewer.push_back(node);
+      Strip_plan again = plan_on_chain(fewer);
+      if(!(again.best.cost < plan.best.cost)) break;
+      plan = std::move(again);
+      by_param = std::move(fewer);
+    }
+    return plan;
+  }
+
+  // The middle chain nodes of the invalid fans of boundary edges in `plan` (three chain nodes
+  // in a row in one quad) that are no input vertex. A crack keeps every vertex, so such a
+  // node's neighbours lie on its segment: leaving it out keeps the crack.
+  std::vector<std::size_t> middles_of_invalid_fans(const Strip_plan& plan) const
+  {
+    std::vector<std::size_t> middles;
+    const std::size_t M = plan.gid.size();
+    for(const Quad& q : plan.best.quads) {
+      if(m_costs.cost(q) < 1000.0) continue;
+      for(std::size_t k = 0; k < M; ++k) {
+        const std::size_t before = plan.gid[(k + M - 1) % M], middle = plan.gid[k], after = plan.gid[(k + 1) % M];
+        auto in_q = [&](std::size_t v) { return std::find(q.begin(), q.end(), v) != q.end(); };
+        if(in_q(before) && in_q(middle) && in_q(after) && !m_zone.is_input_vertex(middle)) middles.push_back(middle);
+      }
+    }
+    return middles;
+  }
+
+  // The pairing onto a given chain (arclength along this loop, mesh id): each F point takes
+  // the chain node nearest its projection (in order along the loop), with no node added or
+  // left out. The n F edges and M chain edges make n + M triangles: an odd count cannot be
+  // paired (a crack's chain has an even M, its nodes on both sides but the tips).
+  Strip_plan plan_on_chain(std::vector<std::pair<double, std::size_t>> by_param)
+  {
+    Strip_plan plan;
+    if((n + by_param.size()) % 2 != 0) {
+      plan.odd = true;
+      return plan;
+    }
     const Strip_positions proj = m_projection.spread(std::vector<bool>(nv, false));
-    Strip_nodes strip = chain_along_this_loop(chain, proj.P[0]);
+    Strip_nodes strip = chain_from(std::move(by_param), proj.P[0]);
     give_first_points_their_nearest_nodes(strip, proj.P);
     plan.best = m_pairing.pair(strip.fid, strip.gid, strip.g, std::vector<Extra_node>(n));
     plan.ok = true;
@@ -100,15 +190,10 @@ private:
     return plan;
   }
 
-  // The chain's nodes by arclength along this loop, from the one nearest arclength `start`
-  // (the first F point's projection), which starts the strip.
-  Strip_nodes chain_along_this_loop(const std::vector<std::size_t>& chain, double start) const
+  // The chain's nodes (arclength, mesh id) by arclength along this loop, from the one nearest
+  // arclength `start` (the first F point's projection), which starts the strip.
+  Strip_nodes chain_from(std::vector<std::pair<double, std::size_t>> by_param, double start) const
   {
-    std::vector<std::pair<double, std::size_t>> by_param; // arclength, mesh id
-    for(std::size_t id : chain) {
-      const Loop_locator::Hit h = m_zone.locator->closest(m_zone.xy[id], 1e-9 * m_zone.locator->diagonal(), l);
-      by_param.emplace_back(m_zone.locator->param(h), id);
-    }
     std::size_t first = 0;
     for(std::size_t k = 1; k < by_param.size(); ++k)
       if(std::abs(cyclic(by_param[k].first - start)) < std::abs(cyclic(by_param[first].first - start))) first = k;
@@ -685,6 +770,14 @@ private:
   // the quads of the chosen plan, or a failure
   void add_plan(const Strip_plan& plan)
   {
+    if(plan.odd) { // finer cells about one point may change the parity; about all would not
+      const std::size_t v = m_zone.cycles[c].front();
+      m_zone.requests.for_validity.emplace_back(m_zone.xy[v], m_zone.local_size[v]);
+      m_zone.report.failure = "the buffer strip around a crack or an interface has an odd number of edges ("
+                              + std::to_string(n) + " first buffer points around a chain of fixed nodes): it cannot be"
+                              " paired into quads";
+      return;
+    }
     if(!plan.ok) {
       m_zone.request_all(c);
       m_zone.report.failure = "the boundary chain of a buffer strip is out of order";
