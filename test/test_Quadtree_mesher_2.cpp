@@ -747,6 +747,20 @@ TEST(Quadtree_mesher_2, a_crack_is_a_chain_of_mesh_edges_with_quads_on_either_si
   }
 }
 
+// A crack's kink of 155 and 205 degrees in a random convex domain (crack_sweep.py --seed 12,
+// domain 23): the narrow side took the wide side's three nodes about the kink and fanned over
+// them (154.7 degrees at the kink) until the two beside it could leave both sides.
+TEST(Quadtree_mesher_2, a_crack_kink_keeps_no_fan_over_its_narrow_side)
+{
+  Domain d;
+  std::string error;
+  ASSERT_TRUE(QM::IO::read_poly(std::string(QM2_TEST_DATA_DIR) + "/crack_kink_fan_12_23.poly", d, &error)) << error;
+  const QM::Quad_mesh_2<K::Point_2> mesh = Mesher(d).run();
+  const std::vector<K::Point_2> crack(d.points.end() - 5, d.points.end());
+  EXPECT_TRUE(crack_is_an_edge_chain(mesh, crack));
+  expect_angles_within_45_135(mesh);
+}
+
 // The shared case `face`: three holes, two cracks and two isolated points.
 TEST(Quadtree_mesher_2, the_shared_face_keeps_its_cracks_and_isolated_points)
 {

@@ -61,8 +61,7 @@ class Buffer_strip : Buffer_tolerances
     std::vector<std::size_t> fid, gid, g;
     std::vector<double> gparam;
   };
-  // `odd`: not ok because a given chain leaves an odd count of triangles (see plan_on_chain())
-  struct Strip_plan { bool ok = false, odd = false; Strip_result best; std::vector<std::size_t> gid; };
+  struct Strip_plan { bool ok = false; Strip_result best; std::vector<std::size_t> gid; };
   // where a gap's extra node lies: a loop vertex, or none, and its arclength
   struct Site { std::size_t vertex; double param; };
 
@@ -132,55 +131,56 @@ private:
   }
 
   // The pairing onto a crack's chain (plan_on_chain()); where a side's F point must fan over
-  // three chain nodes in a row (the other side, a reflex corner's, took more nodes there) and
-  // the middle one is no input vertex, that node leaves both sides and the strip is paired
-  // again, while that lowers its cost.
+  // three chain nodes in a row into an invalid quad, or one with the boundary's angle out of
+  // range (the other side, a reflex corner's, took more nodes there), the middle node leaves
+  // both sides if it is no input vertex, else its two neighbours that are none, and the strip
+  // is paired again, while that lowers its cost.
   Strip_plan plan_without_flat_crack_nodes(std::vector<std::pair<double, std::size_t>> by_param)
   {
     Strip_plan plan = plan_on_chain(by_param);
-    for(int attempt = 0; attempt < 8 && plan.best.cost.sum >= 1e12; ++attempt) {
-      const std::vector<std::size_t> flat = middles_of_invalid_fans(plan);
-      if(flat.empty()) break;
+    for(int attempt = 0; attempt < 8 && plan.ok && plan.best.cost.sum >= 1e12; ++attempt) {
+      const std::vector<std::size_t> leave_out = nodes_of_fans_out_of_range(plan);
+      if(leave_out.empty()) break;
       std::vector<std::pair<double, std::size_t>> fewer;
       for(const auto& node : by_param)
-        if(std::find(flat.begin(), flat.end(), node.second) == flat.end()) fewer.push_back(node);
+        if(std::find(leave_out.begin(), leave_out.end(), node.second) == leave_out.end()) fewer.push_back(node);
       Strip_plan again = plan_on_chain(fewer);
-      if(!(again.best.cost < plan.best.cost)) break;
+      if(!again.ok || !(again.best.cost < plan.best.cost)) break;
       plan = std::move(again);
       by_param = std::move(fewer);
     }
     return plan;
   }
 
-  // The middle chain nodes of the invalid fans of boundary edges in `plan` (three chain nodes
-  // in a row in one quad) that are no input vertex. A crack keeps every vertex, so such a
-  // node's neighbours lie on its segment: leaving it out keeps the crack.
-  std::vector<std::size_t> middles_of_invalid_fans(const Strip_plan& plan) const
+  // The chain nodes to leave out about the invalid fans of boundary edges in `plan` (three chain
+  // nodes in a row in one quad, see Strip_quad_costs::cost()): the middle one if it is no input
+  // vertex, else those of its neighbours that are none. A crack keeps every vertex, so such a node's neighbours lie
+  // on its segment: leaving it out keeps the crack.
+  std::vector<std::size_t> nodes_of_fans_out_of_range(const Strip_plan& plan) const
   {
-    std::vector<std::size_t> middles;
+    std::vector<std::size_t> nodes;
     const std::size_t M = plan.gid.size();
     for(const Quad& q : plan.best.quads) {
       if(m_costs.cost(q) < 1000.0) continue;
+      auto in_q = [&](std::size_t v) { return std::find(q.begin(), q.end(), v) != q.end(); };
       for(std::size_t k = 0; k < M; ++k) {
         const std::size_t before = plan.gid[(k + M - 1) % M], middle = plan.gid[k], after = plan.gid[(k + 1) % M];
-        auto in_q = [&](std::size_t v) { return std::find(q.begin(), q.end(), v) != q.end(); };
-        if(in_q(before) && in_q(middle) && in_q(after) && !m_zone.is_input_vertex(middle)) middles.push_back(middle);
+        if(!in_q(before) || !in_q(middle) || !in_q(after)) continue;
+        if(!m_zone.is_input_vertex(middle)) nodes.push_back(middle);
+        else
+          for(std::size_t v : { before, after })
+            if(!m_zone.is_input_vertex(v)) nodes.push_back(v);
       }
     }
-    return middles;
+    return nodes;
   }
 
   // The pairing onto a given chain (arclength along this loop, mesh id): each F point takes
   // the chain node nearest its projection (in order along the loop), with no node added or
-  // left out. The n F edges and M chain edges make n + M triangles: an odd count cannot be
-  // paired (a crack's chain has an even M, its nodes on both sides but the tips).
+  // left out.
   Strip_plan plan_on_chain(std::vector<std::pair<double, std::size_t>> by_param)
   {
     Strip_plan plan;
-    if((n + by_param.size()) % 2 != 0) {
-      plan.odd = true;
-      return plan;
-    }
     const Strip_positions proj = m_projection.spread(std::vector<bool>(nv, false));
     Strip_nodes strip = chain_from(std::move(by_param), proj.P[0]);
     give_first_points_their_nearest_nodes(strip, proj.P);
@@ -770,14 +770,6 @@ private:
   // the quads of the chosen plan, or a failure
   void add_plan(const Strip_plan& plan)
   {
-    if(plan.odd) { // finer cells about one point may change the parity; about all would not
-      const std::size_t v = m_zone.cycles[c].front();
-      m_zone.requests.for_validity.emplace_back(m_zone.xy[v], m_zone.local_size[v]);
-      m_zone.report.failure = "the buffer strip around a crack or an interface has an odd number of edges ("
-                              + std::to_string(n) + " first buffer points around a chain of fixed nodes): it cannot be"
-                              " paired into quads";
-      return;
-    }
     if(!plan.ok) {
       m_zone.request_all(c);
       m_zone.report.failure = "the boundary chain of a buffer strip is out of order";
