@@ -138,25 +138,25 @@ private:
   Strip_plan plan_without_flat_crack_nodes(std::vector<std::pair<double, std::size_t>> by_param)
   {
     Strip_plan plan = plan_on_chain(by_param);
-    for(int attempt = 0; attempt < 8 && plan.ok && plan.best.cost.sum >= 1e12; ++attempt) {
-      const std::vector<std::size_t> leave_out = nodes_of_fans_out_of_range(plan);
+    for(int attempt = 0; attempt < 8 && plan.best.cost.sum >= 1e12; ++attempt) {
+      const std::vector<std::size_t> leave_out = nodes_about_invalid_fans(plan);
       if(leave_out.empty()) break;
       std::vector<std::pair<double, std::size_t>> fewer;
       for(const auto& node : by_param)
         if(std::find(leave_out.begin(), leave_out.end(), node.second) == leave_out.end()) fewer.push_back(node);
       Strip_plan again = plan_on_chain(fewer);
-      if(!again.ok || !(again.best.cost < plan.best.cost)) break;
+      if(!(again.best.cost < plan.best.cost)) break;
       plan = std::move(again);
       by_param = std::move(fewer);
     }
     return plan;
   }
 
-  // The chain nodes to leave out about the invalid fans of boundary edges in `plan` (three chain
-  // nodes in a row in one quad, see Strip_quad_costs::cost()): the middle one if it is no input
-  // vertex, else those of its neighbours that are none. A crack keeps every vertex, so such a node's neighbours lie
-  // on its segment: leaving it out keeps the crack.
-  std::vector<std::size_t> nodes_of_fans_out_of_range(const Strip_plan& plan) const
+  // The chain nodes to leave out about the invalid fans of boundary edges in `plan` (three
+  // chain nodes in a row in one quad, see Strip_quad_costs::cost()): the middle one if it is
+  // no input vertex, else those of its neighbours that are none. A crack keeps every vertex,
+  // so such a node lies on a segment between two others: leaving it out keeps the crack.
+  std::vector<std::size_t> nodes_about_invalid_fans(const Strip_plan& plan) const
   {
     std::vector<std::size_t> nodes;
     const std::size_t M = plan.gid.size();
