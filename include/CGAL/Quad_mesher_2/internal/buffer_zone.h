@@ -48,13 +48,23 @@ struct Refinement_requests
   std::vector<std::pair<Point_2d, double>> for_angles;
 };
 
+/// whether vertex k of `loop` is the tip of a crack (its neighbours are one input point: the
+/// loop runs along the crack and back), a corner of 360 degrees
+template <class K>
+bool is_crack_tip(const Boundary_loop_2<K>& loop, std::size_t k)
+{
+  const std::vector<std::size_t>& lv = loop.vertices;
+  const std::size_t nv = lv.size();
+  return lv[(k + nv - 1) % nv] == lv[(k + 1) % nv];
+}
+
 /// the angle of the domain at vertex k of `loop` (the domain on its left), degrees
 template <class K>
 double loop_corner_angle(const Domain_2<K>& domain, const Boundary_loop_2<K>& loop, std::size_t k)
 {
   const std::vector<std::size_t>& lv = loop.vertices;
   const std::size_t nv = lv.size();
-  if(lv[(k + nv - 1) % nv] == lv[(k + 1) % nv]) return 360.0; // the tip of a crack
+  if(is_crack_tip(loop, k)) return 360.0;
   return 360.0 - right_side_angle(to_point_2d(domain.points[lv[(k + nv - 1) % nv]]), to_point_2d(domain.points[lv[k]]),
                                   to_point_2d(domain.points[lv[(k + 1) % nv]]));
 }
@@ -450,8 +460,7 @@ public:
   {
     const auto& loop_xy = locator->loop(l);
     const std::size_t nv = loop_xy.size();
-    const auto& lv = loops.loops[l].vertices;
-    if(lv[(k + nv - 1) % nv] == lv[(k + 1) % nv]) return 360.0; // the tip of a crack
+    if(is_crack_tip(loops.loops[l], k)) return 360.0;
     return 360.0 - right_side_angle(loop_xy[(k + nv - 1) % nv], loop_xy[k], loop_xy[(k + 1) % nv]);
   }
 

@@ -285,7 +285,7 @@ private:
   {
     if(m_zone.loops.loops[l].twin != l || (h.t > 0 && h.t < 1)) return false;
     const std::size_t nv = m_zone.loops.loops[l].vertices.size();
-    return m_zone.domain_angle(l, h.t == 0 ? h.edge : (h.edge + 1) % nv) == 360.0;
+    return is_crack_tip(m_zone.loops.loops[l], h.t == 0 ? h.edge : (h.edge + 1) % nv);
   }
 
   Buffer_zone<K>& m_zone;
