@@ -21,6 +21,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <memory>
 #include <string>
 #include <utility>
@@ -57,6 +58,12 @@ struct Boundary_loop_2
   /// v0 ... vk inside the domain) is the hole loop v0 ... vk ... v1 that runs along it and back,
   /// enclosing nothing: the domain is on both of its sides, and it is its own twin.
   std::size_t twin = std::size_t(-1);
+  /// Per edge k (from vertex k to vertex k + 1): the loop and the edge that run along the same
+  /// segment the other way, where the domain lies on both sides of it (an interface, a crack,
+  /// or a segment between two faces that meet at junctions); `{-1, -1}` on the domain's
+  /// boundary. Unlike `twin`, it is per edge: a face of a junction's arrangement shares each
+  /// stretch of its boundary with another face.
+  std::vector<std::array<std::size_t, 2>> edge_twins;
 };
 
 /// \ingroup PkgQuadMesher2Ref
@@ -149,6 +156,7 @@ public:
     number_regions(order);
     out.region_attributes = locate_region_attributes();
     for(std::size_t l : order) {
+      if(!m_kept[l]) continue; // a face of a junction's arrangement in a hole, or the outside
       Boundary_loop_2<K> loop;
       loop.vertices = m_loops[l];
       loop.is_outer = m_is_outer[l];
@@ -167,11 +175,32 @@ public:
       out.loops.back().twin = out.loops.size();
       out.loops.push_back(std::move(loop));
     }
+    find_edge_twins(out.loops);
     return out;
   }
 
 private:
+  // Boundary_loop_2::edge_twins: the loop edges along one segment, either way
+  static void find_edge_twins(std::vector<Boundary_loop_2<K> >& loops)
+  {
+    std::vector<std::array<std::size_t, 4> > edges; // from, to, loop, edge
+    for(std::size_t l = 0; l < loops.size(); ++l) {
+      const auto& v = loops[l].vertices;
+      loops[l].edge_twins.assign(v.size(), {none, none});
+      for(std::size_t k = 0; k < v.size(); ++k) edges.push_back({v[k], v[(k + 1) % v.size()], l, k});
+    }
+    std::sort(edges.begin(), edges.end());
+    for(const auto& e : edges) {
+      const std::array<std::size_t, 4> back{{e[1], e[0], 0, 0}};
+      const auto it = std::lower_bound(edges.begin(), edges.end(), back);
+      if(it != edges.end() && (*it)[0] == e[1] && (*it)[1] == e[0]) loops[e[2]].edge_twins[e[3]] = {(*it)[2], (*it)[3]};
+    }
+  }
+
   // ---- messages -------------------------------------------------------------------------
+  // whether loop l is a cycle of a component with junctions, traced by trace_faces()
+  bool traced(std::size_t l) const { return m_has_junction[m_component[l]]; }
+
   std::string pt(const Point_2& p) const { return loops_format_point(p, m_traits); }
   std::string vtx(std::size_t v) const { return "vertex " + m_d.point_label(v) + " " + pt(m_d.points[v]); }
   std::string seg_str(std::size_t s) const
@@ -182,6 +211,12 @@ private:
   }
   std::string loop_str(std::size_t l) const
   {
+    if(m_envelope[l])
+      return "the outline of the segments that meet at junctions, from " + vtx(m_loops[l][0]) + " (segment " +
+             m_d.segment_label(m_loop_first_segment[l]) + ")";
+    if(m_face_of_junction[l])
+      return "the face of " + std::to_string(m_loops[l].size()) + " vertices starting at " + vtx(m_loops[l][0]) +
+             " (segment " + m_d.segment_label(m_loop_first_segment[l]) + ")";
     if(m_crack[l])
       return "the open polyline of " + std::to_string(m_loops[l].size() / 2) +
              (m_loops[l].size() == 2 ? " segment from " : " segments from ") + vtx(m_loops[l][0]) +
@@ -233,30 +268,31 @@ private:
         throw Meshing_error("a loop with fewer than 3 vertices (a repeated segment): " + both);
       throw Meshing_error("repeated segment: " + both);
     }
-    // Degrees: every vertex on a segment has two, or one at the end of a crack.
-    for(std::size_t v = 0; v < np; ++v) {
-      if(m_degree[v] <= 2) continue;
-      std::string segs;
-      for(std::size_t s = 0; s < ns; ++s)
-        if(m_d.segments[s][0] == v || m_d.segments[s][1] == v) segs += (segs.empty() ? "" : ", ") + m_d.segment_label(s);
-      throw Meshing_error(vtx(v) + " is shared by " + std::to_string(m_degree[v]) + " segments (" + segs +
-                          "): boundary loops may not touch or branch; every vertex on a segment must have exactly two");
-    }
   }
 
   // ---- 2. loops -------------------------------------------------------------------------
+  // The segments joined at their ends make components: a closed loop, an open polyline (a
+  // crack), or, where a vertex has three segments or more, an arrangement traced face by face
+  // (trace_faces()).
   void compute_loops()
   {
     const std::size_t np = m_d.points.size(), ns = m_d.segments.size();
-    std::vector<std::array<std::size_t, 2> > inc(np, {none, none});
+    find_components();
+    std::vector<std::array<std::size_t, 2> > inc(np, {none, none}); // at vertices of one or two segments
     for(std::size_t s = 0; s < ns; ++s)
       for(int e = 0; e < 2; ++e) {
         auto& slot = inc[m_d.segments[s][e]];
         slot[slot[0] == none ? 0 : 1] = s;
       }
     m_loop_of_segment.assign(ns, none);
+    m_counted.assign(ns, {none, none});
+    m_sides.assign(ns, {none, none});
     for(std::size_t s0 = 0; s0 < ns; ++s0) {
       if(m_loop_of_segment[s0] != none) continue;
+      if(m_has_junction[m_component_of_segment[s0]]) {
+        trace_faces(m_component_of_segment[s0]);
+        continue;
+      }
       const std::size_t l = m_loops.size();
       std::size_t s = s0, v = m_d.segments[s0][0];
       const bool crack = walk_to_crack_end(inc, s, v);
@@ -264,17 +300,17 @@ private:
       std::vector<std::size_t> verts;
       do {
         m_loop_of_segment[s] = l;
+        if(!crack) m_counted[s][0] = l;
         verts.push_back(v);
         const auto& sg = m_d.segments[s];
         v = (sg[0] == v) ? sg[1] : sg[0];
         s = (inc[v][0] == s) ? inc[v][1] : inc[v][0];
       } while(v != start && s != none);
-      m_crack.push_back(crack);
+      add_loop(m_component_of_segment[s0], crack, false, s0);
       if(crack) { // along the polyline and back: v0 ... vk ... v1
         verts.push_back(v);
         for(std::size_t k = verts.size() - 2; k > 0; --k) verts.push_back(verts[k]);
         m_loops.push_back(std::move(verts));
-        m_loop_first_segment.push_back(s0);
         continue;
       }
       if(verts.size() < 3) {
@@ -283,8 +319,131 @@ private:
         throw Meshing_error("a loop with fewer than 3 vertices (segment " + m_d.segment_label(s0) + "):" + vs);
       }
       m_loops.push_back(std::move(verts));
-      m_loop_first_segment.push_back(s0);
     }
+  }
+
+  // the per-loop facts of a loop about to be pushed onto m_loops
+  void add_loop(std::size_t component, bool crack, bool envelope, std::size_t first_segment)
+  {
+    m_component.push_back(component);
+    m_crack.push_back(crack);
+    m_face_of_junction.push_back(false);
+    m_envelope.push_back(envelope);
+    m_loop_first_segment.push_back(first_segment);
+  }
+
+  // m_component_of_segment: the segments joined through shared vertices, numbered by their
+  // lowest segment; m_has_junction: whether a vertex of the component has three or more
+  void find_components()
+  {
+    const std::size_t np = m_d.points.size(), ns = m_d.segments.size();
+    std::vector<std::size_t> parent(np);
+    for(std::size_t v = 0; v < np; ++v) parent[v] = v;
+    auto find = [&](std::size_t v) {
+      while(parent[v] != v) v = parent[v] = parent[parent[v]];
+      return v;
+    };
+    for(const auto& sg : m_d.segments) parent[find(sg[0])] = find(sg[1]);
+    std::vector<std::size_t> number(np, none);
+    m_component_of_segment.resize(ns);
+    for(std::size_t s = 0; s < ns; ++s) {
+      std::size_t& c = number[find(m_d.segments[s][0])];
+      if(c == none) { c = m_has_junction.size(); m_has_junction.push_back(false); }
+      m_component_of_segment[s] = c;
+      for(std::size_t v : m_d.segments[s])
+        if(m_degree[v] > 2) m_has_junction[c] = true;
+    }
+  }
+
+  // ---- 2b. the faces of a component with junctions ---------------------------------------
+  // Half-edge 2s runs along segment s from its vertex 0, 2s + 1 back. Walking a face with it
+  // on the left, the next half-edge leaves the far end as the first one clockwise from the
+  // way back. Every cycle but one bounds a face (counterclockwise); the one around the
+  // component, its envelope, runs along the half-edge most counterclockwise of those leaving
+  // its lexicographically smallest vertex. A cycle starts at its lowest half-edge.
+  void trace_faces(std::size_t component)
+  {
+    std::vector<std::size_t> segs;
+    for(std::size_t s = 0; s < m_d.segments.size(); ++s)
+      if(m_component_of_segment[s] == component) segs.push_back(s);
+    std::map<std::size_t, std::vector<std::size_t> > around; // per vertex, its half-edges counterclockwise
+    for(std::size_t s : segs)
+      for(std::size_t e = 0; e < 2; ++e) around[m_d.segments[s][e]].push_back(2 * s + e);
+    std::map<std::size_t, std::size_t> position; // of each half-edge in its vertex's ring
+    for(auto& [v, ring] : around) {
+      sort_counterclockwise(v, ring);
+      for(std::size_t k = 0; k < ring.size(); ++k) position[ring[k]] = k;
+    }
+    auto next = [&](std::size_t h) {
+      const std::vector<std::size_t>& ring = around[target(h)];
+      return ring[(position[h ^ 1] + ring.size() - 1) % ring.size()];
+    };
+    const auto less_xy = m_traits.less_xy_2_object();
+    auto lowest = around.begin();
+    for(auto it = around.begin(); it != around.end(); ++it)
+      if(less_xy(m_d.points[it->first], m_d.points[lowest->first])) lowest = it;
+    const std::size_t envelope_edge = most_counterclockwise(lowest->first, lowest->second);
+    std::map<std::size_t, std::size_t> cycle_of; // half-edge -> loop
+    for(std::size_t s : segs)
+      for(std::size_t h0 : {2 * s, 2 * s + 1}) {
+        if(cycle_of.count(h0) != 0) continue;
+        const std::size_t l = m_loops.size();
+        std::vector<std::size_t> verts;
+        bool envelope = false;
+        std::size_t h = h0;
+        do {
+          cycle_of[h] = l;
+          envelope = envelope || h == envelope_edge;
+          verts.push_back(m_d.segments[h / 2][h % 2]);
+          h = next(h);
+        } while(h != h0);
+        m_loops.push_back(std::move(verts));
+        add_loop(component, false, envelope, s);
+        m_face_of_junction.back() = !envelope;
+      }
+    for(std::size_t s : segs) {
+      m_loop_of_segment[s] = cycle_of[2 * s];
+      const std::size_t a = cycle_of[2 * s], b = cycle_of[2 * s + 1];
+      m_sides[s] = {a, b};
+      if(a == b) continue; // a segment with one face on both sides crosses a ray into it twice
+      std::size_t k = 0;
+      for(std::size_t c : {a, b})
+        if(m_face_of_junction[c]) m_counted[s][k++] = c;
+    }
+  }
+
+  std::size_t target(std::size_t h) const { return m_d.segments[h / 2][1 - h % 2]; }
+
+  // the half-edges leaving v, by their angle from the x axis (exact predicates: no two leave
+  // in one direction, the overlap check has rejected that)
+  void sort_counterclockwise(std::size_t v, std::vector<std::size_t>& ring) const
+  {
+    const Point_2& o = m_d.points[v];
+    const auto cmp_y = m_traits.compare_y_2_object();
+    const auto cmp_x = m_traits.compare_x_2_object();
+    const auto orient = m_traits.orientation_2_object();
+    auto upper = [&](const Point_2& q) { // angle in [0, 180)
+      const Comparison_result cy = cmp_y(q, o);
+      return cy == LARGER || (cy == EQUAL && cmp_x(q, o) == LARGER);
+    };
+    std::sort(ring.begin(), ring.end(), [&](std::size_t g, std::size_t h) {
+      const Point_2& a = m_d.points[target(g)];
+      const Point_2& b = m_d.points[target(h)];
+      const bool ua = upper(a), ub = upper(b);
+      if(ua != ub) return ua;
+      return orient(o, a, b) == LEFT_TURN;
+    });
+  }
+
+  // of the half-edges leaving v, the lexicographically smallest vertex of its component (all
+  // point into less than a half-plane), the most counterclockwise: the outer face on its left
+  std::size_t most_counterclockwise(std::size_t v, const std::vector<std::size_t>& ring) const
+  {
+    const auto orient = m_traits.orientation_2_object();
+    std::size_t best = ring.front();
+    for(std::size_t h : ring)
+      if(orient(m_d.points[v], m_d.points[target(best)], m_d.points[target(h)]) == LEFT_TURN) best = h;
+    return best;
   }
 
   // Walks from segment s back through v to the end of an open polyline (a vertex of one
@@ -307,7 +466,7 @@ private:
   void check_degenerate_loops()
   {
     for(std::size_t l = 0; l < m_loops.size(); ++l) {
-      if(m_crack[l]) continue; // encloses nothing by design
+      if(m_crack[l] || traced(l)) continue; // encloses nothing by design; a face has area
       const auto& L = m_loops[l];
       const Point_2& a = m_d.points[L[0]];
       const Point_2& b = m_d.points[L[1]];  // differs from a: no zero-length segments
@@ -393,8 +552,8 @@ private:
     m_ccw.resize(m_loops.size());
     for(std::size_t l = 0; l < m_loops.size(); ++l) {
       const auto& L = m_loops[l];
-      m_ccw[l] = false; // a crack reads the same either way
-      if(m_crack[l]) continue;
+      m_ccw[l] = traced(l) && !m_envelope[l]; // a crack reads the same either way
+      if(m_crack[l] || traced(l)) continue;
       std::size_t k = 0;
       for(std::size_t i = 1; i < L.size(); ++i)
         if(less_xy(m_d.points[L[i]], m_d.points[L[k]])) k = i;
@@ -410,10 +569,11 @@ private:
   // ---- 6. point location by ray crossing (upward vertical ray) ----------------------------
   void build_point_locator() { m_crossings.assign(m_loops.size(), 0); }
 
-  /// Fills `m_inside` with the loops that contain `p` strictly (skipping `skip_loop`), and
-  /// returns the innermost one (`none` if none) once the depths are known, else `none`.
-  /// Sets `on_seg` if `p` lies on a segment (of a loop other than `skip_loop`).
-  std::size_t locate(const Point_2& p, std::size_t skip_loop, std::size_t& on_seg)
+  /// Fills `m_inside` with the loops that contain `p` strictly (of components other than
+  /// `skip_component`; a crack or an envelope contains nothing), and returns the innermost one
+  /// (`none` if none) once the depths are known, else `none`. Sets `on_seg` if `p` lies on a
+  /// segment (of a component other than `skip_component`).
+  std::size_t locate(const Point_2& p, std::size_t skip_component, std::size_t& on_seg)
   {
     const auto cmp_x = m_traits.compare_x_2_object();
     const auto orient = m_traits.orientation_2_object();
@@ -422,8 +582,7 @@ private:
     std::vector<std::size_t> touched;
     on_seg = none;
     m_tree->query(ray, [&](std::size_t s) {
-      const std::size_t l = m_loop_of_segment[s];
-      if(l == skip_loop || on_seg != none) return;
+      if(m_component_of_segment[s] == skip_component || on_seg != none) return;
       const Point_2& a = m_d.points[m_d.segments[s][0]];
       const Point_2& b = m_d.points[m_d.segments[s][1]];
       const Comparison_result ca = cmp_x(a, p), cb = cmp_x(b, p);
@@ -431,14 +590,15 @@ private:
         on_seg = s;
         return;
       }
-      if(m_crack[l]) return; // encloses nothing
+      if(m_counted[s][0] == none) return; // encloses nothing
       // Half-open rule: the segment counts if one end has x <= p.x and the other x > p.x.
       const bool spans = (ca != LARGER && cb == LARGER) || (cb != LARGER && ca == LARGER);
       if(!spans) return;
       const Point_2& left = (ca == LARGER) ? b : a;
       const Point_2& right = (ca == LARGER) ? a : b;
       if(orient(left, right, p) != RIGHT_TURN) return;  // p is not below the segment
-      if(m_crossings[l]++ == 0) touched.push_back(l);
+      for(std::size_t l : m_counted[s])
+        if(l != none && m_crossings[l]++ == 0) touched.push_back(l);
     });
     m_inside.clear();
     for(std::size_t l : touched) {
@@ -458,7 +618,7 @@ private:
     std::vector<std::vector<std::size_t> > containers(nl);
     for(std::size_t l = 0; l < nl; ++l) {
       std::size_t on_seg = none;
-      locate(m_d.points[m_loops[l][0]], l, on_seg);
+      locate(m_d.points[m_loops[l][0]], m_component[l], on_seg);
       CGAL_assertion(on_seg == none);  // excluded by the intersection checks
       containers[l] = m_inside;
     }
@@ -507,8 +667,14 @@ private:
       m_in_domain[l] = parity ? (m_depth[l] % 2 == 0) : m_hole_in[l] == none;
     m_is_outer.resize(nl);
     m_interface.assign(nl, false);
+    m_kept.assign(nl, true);
     for(std::size_t l = 0; l < nl; ++l) {
-      if(m_crack[l]) m_in_domain[l] = false; // nothing lies inside it
+      if(m_crack[l] || m_envelope[l]) m_in_domain[l] = false; // nothing lies inside it
+      if(traced(l)) {
+        m_is_outer[l] = !m_envelope[l];
+        m_kept[l] = m_envelope[l] ? m_in_domain[m_parent[l] == none ? nl : m_parent[l]] : m_in_domain[l];
+        continue;
+      }
       const bool inside = m_in_domain[l];
       const bool outside = m_in_domain[m_parent[l] == none ? nl : m_parent[l]];
       if(m_crack[l] && !outside)
@@ -531,6 +697,26 @@ private:
       }
       m_is_outer[l] = inside;
     }
+    for(std::size_t s = 0; s < m_d.segments.size(); ++s)
+      if(m_has_junction[m_component_of_segment[s]]) check_domain_beside(s);
+  }
+
+  // A segment of a component with junctions must have the domain on one side at least: the
+  // face of each of its half-edges (found as the cycles holding them) or, for the envelope,
+  // the region around the component.
+  void check_domain_beside(std::size_t s) const
+  {
+    const std::array<std::size_t, 2>& sides = m_sides[s];
+    if(m_kept[sides[0]] || m_kept[sides[1]]) return;
+    auto side = [&](std::size_t l) {
+      if(m_envelope[l]) return where_region(m_parent[l]);
+      const std::size_t h = m_hole_in[l];
+      return "inside " + loop_str(l) + (h != none ? ", which holds hole point " + m_d.hole_label(h) + " " + pt(m_d.holes[h])
+                                                  : ", which nesting makes a hole");
+    };
+    throw Meshing_error("segment " + seg_str(s) + " has the domain on neither side: it lies " + side(sides[0]) +
+                        (sides[1] == sides[0] ? std::string() : " and " + side(sides[1])) +
+                        "; a segment must bound the domain or lie in it");
   }
 
   // ---- 9. regions and their attributes ----------------------------------------------------
@@ -540,7 +726,7 @@ private:
     m_region.assign(m_loops.size(), none);
     std::size_t regions = 0;
     for(std::size_t l : order)
-      m_region[l] = m_is_outer[l] ? regions++ : m_region[m_parent[l]];
+      if(m_kept[l]) m_region[l] = m_is_outer[l] ? regions++ : m_region[m_parent[l]];
     m_regions = regions;
   }
 
@@ -578,6 +764,16 @@ private:
   std::vector<std::vector<std::size_t> > m_loops;     // in discovery order, unoriented
   std::vector<std::size_t> m_loop_first_segment;
   std::vector<std::size_t> m_loop_of_segment;
+  std::vector<std::size_t> m_component_of_segment;
+  std::vector<bool> m_has_junction;    // per component: a vertex of three segments or more
+  // per segment: the loops whose inside a ray crossing it enters or leaves (none, one or two)
+  std::vector<std::array<std::size_t, 2> > m_counted;
+  // per segment of a component with junctions: the cycles of its half-edges, along and back
+  std::vector<std::array<std::size_t, 2> > m_sides;
+  std::vector<std::size_t> m_component; // per loop
+  std::vector<bool> m_face_of_junction; // per loop: a face's cycle of a component with junctions
+  std::vector<bool> m_envelope;         // per loop: the cycle around a component with junctions
+  std::vector<bool> m_kept;             // per loop: with the domain on its left, so returned
   std::vector<Bbox_2> m_seg_boxes;
   std::unique_ptr<Box_tree> m_tree;
   std::vector<bool> m_ccw;
@@ -656,6 +852,20 @@ Domain_loops_2<K> extract_loops(const Domain_2<K>& domain, const K& traits = K()
 }
 
 namespace internal {
+
+/// Throws Meshing_error naming the first vertex of three segments or more: the buffer stages
+/// mesh loops that share no vertex, and cracks.
+template <class K>
+void reject_junctions(const Domain_2<K>& domain, const Domain_loops_2<K>& loops)
+{
+  std::vector<std::size_t> degree(domain.points.size(), 0);
+  for(const auto& sg : domain.segments) ++degree[sg[0]], ++degree[sg[1]];
+  for(std::size_t v = 0; v < degree.size(); ++v)
+    if(degree[v] > 2)
+      throw Meshing_error("vertex " + domain.point_label(v) + " " + loops_format_point(domain.points[v], K()) + " joins " +
+                          std::to_string(degree[v]) + " segments into " + std::to_string(loops.loops.size()) +
+                          " loops: junctions (a vertex on three segments or more) are not meshed yet");
+}
 
 /// whether any loop of `loops` is an interface (has a twin)
 template <class K>

@@ -892,8 +892,10 @@ private:
       throw Meshing_error("the input has no points");
     check_finite();
     merge_duplicate_points();
-    if(!m_domain.is_point_cloud())
+    if(!m_domain.is_point_cloud()) {
       m_loops = extract_loops(m_domain, m_traits); // validates the boundary first
+      internal::reject_junctions(m_domain, m_loops);
+    }
     m_grid_aligned_candidate = !m_domain.is_point_cloud() && m_loops.isolated_points.empty()
                                && internal::is_axis_parallel(m_domain, m_loops, m_traits);
     const auto box = points_box();
