@@ -417,26 +417,33 @@ def description(made):
 
 
 def write_poly(path, loops, points, comments, polylines=()):
-    """Triangle's .poly: the comment lines, then 1-based vertices (%.17g) and segments with
+    """Triangle's .poly: the comment lines, then 1-based vertices (%.17g; a point at the place
+    of one written before is that one: a polyline may end on a loop's vertex) and segments with
     marker = loop id (the open `polylines`, cracks, numbered after the loops), then the hole
     points."""
     chains = [(loop, True) for loop in loops] + [(line, False) for line in polylines]
+    vertices, index_of, chain_indices = [], {}, []
+    for marker, (chain, _) in enumerate(chains, 1):
+        indices = []
+        for x, y in chain:
+            key = (float(x), float(y))
+            if key not in index_of:
+                index_of[key] = len(vertices) + 1
+                vertices.append((key, marker))
+            indices.append(index_of[key])
+        chain_indices.append(indices)
+    segments = []
+    for marker, ((chain, closed), indices) in enumerate(zip(chains, chain_indices), 1):
+        for i in range(len(chain) if closed else len(chain) - 1):
+            segments.append((indices[i], indices[(i + 1) % len(chain)], marker))
     with open(path, 'w') as out:
         out.write(''.join('# %s\n' % line for line in comments))
-        out.write('%d 2 0 1\n' % sum(len(chain) for chain, _ in chains))
-        k = 1
-        for marker, (chain, _) in enumerate(chains, 1):
-            for x, y in chain:
-                out.write('%d %.17g %.17g %d\n' % (k, x, y, marker))
-                k += 1
-        out.write('%d 1\n' % (k - 1 - len(polylines)))
-        k = 1
-        s = 1
-        for marker, (chain, closed) in enumerate(chains, 1):
-            for i in range(len(chain) if closed else len(chain) - 1):
-                out.write('%d %d %d %d\n' % (s, k + i, k + (i + 1) % len(chain), marker))
-                s += 1
-            k += len(chain)
+        out.write('%d 2 0 1\n' % len(vertices))
+        for k, ((x, y), marker) in enumerate(vertices, 1):
+            out.write('%d %.17g %.17g %d\n' % (k, x, y, marker))
+        out.write('%d 1\n' % len(segments))
+        for s, (a, b, marker) in enumerate(segments, 1):
+            out.write('%d %d %d %d\n' % (s, a, b, marker))
         out.write('%d\n' % len(points))
         for i, (x, y) in enumerate(points, 1):
             out.write('%d %.17g %.17g\n' % (i, x, y))

@@ -221,17 +221,21 @@ def sweep_and_report(args, one, fields, tables):
     return rows
 
 
-def sweep_written_domains(doc, write, fields, tables, timeout=60):
-    """The main of a sweep over domains that `write(out_dir, seed, index, kinds)` draws and writes
-    (returning the .poly's path and how it was made): its arguments read as add_sweep_arguments()
-    and random_domains.add_domain_arguments() define them, `doc` the help's first line."""
+def sweep_written_domains(doc, write, fields, tables, timeout=60, options=()):
+    """The main of a sweep over domains that `write(out_dir, seed, index, kinds, **values)` draws
+    and writes (returning the .poly's path and how it was made): its arguments read as
+    add_sweep_arguments() and random_domains.add_domain_arguments() define them, plus
+    `options`, (flag, add_argument's keywords) pairs whose values `write` takes by their dest
+    names; `doc` the help's first line."""
     parser = argparse.ArgumentParser(description=doc.split('\n')[0])
     add_sweep_arguments(parser, timeout)
     random_domains.add_domain_arguments(parser)
+    dests = [parser.add_argument(flag, **keywords).dest for flag, keywords in options]
     args = parser.parse_args()
 
     def one(args, index):
-        poly, made = write(args.out_dir, args.seed, index, args.kinds)
+        values = {dest: getattr(args, dest) for dest in dests}
+        poly, made = write(args.out_dir, args.seed, index, args.kinds, **values)
         return mesh_and_verify(args, poly, made)
     sweep_and_report(args, one, fields, tables)
     return 0

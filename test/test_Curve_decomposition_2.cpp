@@ -540,6 +540,16 @@ TEST(CurveDecomposition, ACrackKeepsItsSegments)
   EXPECT_EQ(r.segment_labels.back(), "on the crack from " + std::to_string(first + 1) + " to " + std::to_string(first + 2));
 }
 
+TEST(CurveDecomposition, AJunctionIsNamedAsNotTakenYet)
+{
+  Domain d;
+  add_loop(d, ellipse(12, 10, 10, true));
+  d.segments.push_back({ 0, 6 }); // across the ellipse, between two of its vertices
+  const std::string e = error_of([&] { CGAL::Quad_mesher_2::decompose_domain_curves<K>(d, Options()); });
+  EXPECT_NE(e.find("vertex 0 "), std::string::npos) << e;
+  EXPECT_NE(e.find("joins 3 segments: curve decompositions do not take junctions"), std::string::npos) << e;
+}
+
 TEST(CurveDecomposition, DegenerateInputsAreNamed)
 {
   const Options o;

@@ -523,9 +523,27 @@ TEST(Quadtree_mesher_2, every_quad_carries_its_region)
   EXPECT_NO_THROW(QM::make_quad_mesh_2(d, capped));
 }
 
-// Every interface of `d` (a loop with the domain on both sides) is a chain of mesh edges from
-// vertex to vertex of the input, each edge with one quad on either side, in the region of
-// that side; and every quad in the region its centroid lies in (`region_of`).
+// The mesh vertices on segment ab, ordered from a to b (within 1e-10 of its length: Epick's
+// points on it, to rounding); empty unless the first is a and the last b.
+std::vector<std::size_t> vertices_along(const QM::Quad_mesh_2<K::Point_2>& mesh, const K::Point_2& a, const K::Point_2& b)
+{
+  const K::Segment_2 ab(a, b);
+  const double tolerance = 1e-20 * CGAL::to_double(ab.squared_length());
+  std::vector<std::pair<double, std::size_t>> on; // along a -> b
+  for(std::size_t v = 0; v < mesh.points.size(); ++v)
+    if(CGAL::to_double(CGAL::squared_distance(ab, mesh.points[v])) <= tolerance)
+      on.emplace_back(CGAL::to_double(CGAL::squared_distance(a, mesh.points[v])), v);
+  std::sort(on.begin(), on.end());
+  std::vector<std::size_t> chain;
+  if(on.size() < 2 || mesh.points[on.front().second] != a || mesh.points[on.back().second] != b) return chain;
+  for(const auto& vertex : on) chain.push_back(vertex.second);
+  return chain;
+}
+
+// Every segment of `d` with the domain on both sides (an interface, a crack, faces meeting at
+// junctions) is a chain of mesh edges from vertex to vertex of the input, each edge with one
+// quad on either side, in the region of that side; and every quad in the region its centroid
+// lies in (`region_of`).
 template <class Region_of>
 ::testing::AssertionResult interfaces_are_edge_chains(const QM::Quad_mesh_2<K::Point_2>& mesh, const Domain& d,
                                                       Region_of region_of)
@@ -537,30 +555,27 @@ template <class Region_of>
   std::map<std::pair<std::size_t, std::size_t>, std::size_t> quad_of_edge; // directed, ccw in its quad
   for(std::size_t q = 0; q < mesh.quads.size(); ++q)
     for(int c = 0; c < 4; ++c) quad_of_edge[{ mesh.quads[q][c], mesh.quads[q][(c + 1) % 4] }] = q;
-  const double diagonal = std::sqrt(CGAL::to_double(CGAL::squared_distance(d.points.front(), d.points.back()))) + 1;
   std::size_t interfaces = 0;
-  for(const auto& loop : loops.loops) {
-    if(loop.twin == std::size_t(-1) || !loop.is_outer) continue;
-    ++interfaces;
+  for(std::size_t l = 0; l < loops.loops.size(); ++l) {
+    const auto& loop = loops.loops[l];
     const auto& lv = loop.vertices;
     for(std::size_t k = 0; k < lv.size(); ++k) {
-      const K::Point_2& a = d.points[lv[k]];
-      const K::Point_2& b = d.points[lv[(k + 1) % lv.size()]];
-      const K::Segment_2 ab(a, b);
-      std::vector<std::pair<double, std::size_t>> on; // along a -> b
-      for(std::size_t v = 0; v < mesh.points.size(); ++v)
-        if(CGAL::to_double(CGAL::squared_distance(ab, mesh.points[v])) <= 1e-20 * diagonal * diagonal)
-          on.emplace_back(CGAL::to_double(CGAL::squared_distance(a, mesh.points[v])), v);
-      std::sort(on.begin(), on.end());
-      if(on.size() < 2 || mesh.points[on.front().second] != a || mesh.points[on.back().second] != b)
-        return ::testing::AssertionFailure() << "segment " << k << " of an interface does not end at mesh vertices";
+      const auto twin = loop.edge_twins[k];
+      if(twin[0] == std::size_t(-1) || twin < std::array<std::size_t, 2>{ l, k }) continue; // each segment once
+      ++interfaces;
+      const std::vector<std::size_t> on = vertices_along(mesh, d.points[lv[k]], d.points[lv[(k + 1) % lv.size()]]);
+      if(on.empty())
+        return ::testing::AssertionFailure() << "edge " << k << " of interface loop " << l << " does not end at mesh vertices";
       for(std::size_t j = 0; j + 1 < on.size(); ++j) {
-        const auto left = quad_of_edge.find({ on[j].second, on[j + 1].second });
-        const auto right = quad_of_edge.find({ on[j + 1].second, on[j].second });
+        const auto left = quad_of_edge.find({ on[j], on[j + 1] });
+        const auto right = quad_of_edge.find({ on[j + 1], on[j] });
         if(left == quad_of_edge.end() || right == quad_of_edge.end())
-          return ::testing::AssertionFailure() << "segment " << k << " of an interface is not a chain of inner mesh edges";
-        if(mesh.quad_regions[left->second] != loop.region || mesh.quad_regions[right->second] != loops.loops[loop.twin].region)
-          return ::testing::AssertionFailure() << "the quads beside segment " << k << " of an interface are in the wrong regions";
+          return ::testing::AssertionFailure() << "edge " << k << " of interface loop " << l << " is not a chain of inner mesh edges";
+        if(mesh.quad_regions[left->second] != region_of(mesh, left->second)
+           || mesh.quad_regions[right->second] != region_of(mesh, right->second)
+           || (loop.region == loops.loops[twin[0]].region) != (mesh.quad_regions[left->second] == mesh.quad_regions[right->second]))
+          return ::testing::AssertionFailure() << "the quads beside edge " << k << " of interface loop " << l
+                                               << " are in the wrong regions";
       }
     }
   }
@@ -708,17 +723,10 @@ TEST(Quadtree_mesher_2, a_sharp_interface_corner_is_named_where_angles_stay_out)
   for(const auto& q : mesh.quads)
     for(int c = 0; c < 4; ++c) directed_edges.insert({ q[c], q[(c + 1) % 4] });
   for(std::size_t k = 0; k + 1 < polyline.size(); ++k) {
-    const K::Segment_2 ab(polyline[k], polyline[k + 1]);
-    const double tolerance = 1e-20 * CGAL::to_double(ab.squared_length()); // Epick's points on it, to rounding
-    std::vector<std::pair<double, std::size_t>> on; // along a -> b
-    for(std::size_t v = 0; v < mesh.points.size(); ++v)
-      if(CGAL::to_double(CGAL::squared_distance(ab, mesh.points[v])) <= tolerance)
-        on.emplace_back(CGAL::to_double(CGAL::squared_distance(ab.source(), mesh.points[v])), v);
-    std::sort(on.begin(), on.end());
-    if(on.size() < 2 || mesh.points[on.front().second] != ab.source() || mesh.points[on.back().second] != ab.target())
-      return ::testing::AssertionFailure() << "segment " << k << " of the crack does not end at mesh vertices";
+    const std::vector<std::size_t> on = vertices_along(mesh, polyline[k], polyline[k + 1]);
+    if(on.empty()) return ::testing::AssertionFailure() << "segment " << k << " of the crack does not end at mesh vertices";
     for(std::size_t j = 0; j + 1 < on.size(); ++j)
-      if(!directed_edges.count({ on[j].second, on[j + 1].second }) || !directed_edges.count({ on[j + 1].second, on[j].second }))
+      if(!directed_edges.count({ on[j], on[j + 1] }) || !directed_edges.count({ on[j + 1], on[j] }))
         return ::testing::AssertionFailure() << "segment " << k << " of the crack is not a chain of inner mesh edges";
   }
   return ::testing::AssertionSuccess();
@@ -774,6 +782,142 @@ TEST(Quadtree_mesher_2, the_shared_face_keeps_its_cracks_and_isolated_points)
     EXPECT_NE(std::find(mesh.points.begin(), mesh.points.end(), d.points[v]), mesh.points.end()) << v;
   expect_angles_within_45_135(mesh);
   EXPECT_EQ(QM::compute_quality(mesh).number_of_boundary_loops, 4u);
+}
+
+// the region of quad q: that of the face of `d` (an outer loop, without attributes) that
+// holds its centroid
+struct Face_holding
+{
+  QM::Domain_loops_2<K> loops;
+  const Domain& d;
+  Face_holding(const Domain& domain) : loops(QM::extract_loops(domain)), d(domain) {}
+  std::size_t operator()(const QM::Quad_mesh_2<K::Point_2>& mesh, std::size_t q) const
+  {
+    const auto& v = mesh.quads[q];
+    const K::Point_2 centre = CGAL::centroid(mesh.points[v[0]], mesh.points[v[1]], mesh.points[v[2]], mesh.points[v[3]]);
+    for(const auto& loop : loops.loops) {
+      if(!loop.is_outer) continue;
+      const CGAL::Polygon_2<K> face = QM::loop_polygon_2(d, loop);
+      if(face.bounded_side(centre) == CGAL::ON_BOUNDED_SIDE) return loop.region;
+    }
+    return std::size_t(-1);
+  }
+};
+
+// a closed polygon's segments and, joining its vertices `spokes`, the segments inside it
+Domain polygon_with_spokes(const std::vector<K::Point_2>& polygon, const std::vector<std::array<std::size_t, 2>>& spokes,
+                           const std::vector<K::Point_2>& inner_points = {})
+{
+  Domain d = qm2_test::polygons({ polygon });
+  d.points.insert(d.points.end(), inner_points.begin(), inner_points.end());
+  for(const auto& s : spokes) d.segments.push_back(s);
+  return d;
+}
+
+// Faces that meet at junctions (vertices of three segments or more) are regions meshed
+// together: every segment between two of them a chain of mesh edges, each region's quads
+// on its side, every angle within [45, 135].
+TEST(Quadtree_mesher_2, faces_meeting_at_junctions_share_the_nodes_of_their_segments)
+{
+  typedef K::Point_2 P;
+  std::vector<std::pair<std::string, Domain>> cases;
+  cases.emplace_back("a square split by a segment",
+                     polygon_with_spokes({ P(0, 0), P(1, 0), P(2, 0), P(2, 1.5), P(1, 1.5), P(0, 1.5) }, { { { 1, 4 } } }));
+  cases.emplace_back("a T", polygon_with_spokes({ P(0, 0), P(2, 0), P(2, 0.5), P(2, 1), P(1, 1), P(0, 1), P(0, 0.5) },
+                                                { { { 6, 7 } }, { { 7, 2 } }, { { 7, 4 } } }, { P(1, 0.5) }));
+  cases.emplace_back("a cross", polygon_with_spokes({ P(0, 0), P(1, 0), P(2, 0), P(2, 1), P(2, 2), P(1, 2), P(0, 2), P(0, 1) },
+                                                    { { { 8, 1 } }, { { 8, 3 } }, { { 8, 5 } }, { { 8, 7 } } }, { P(1, 1) }));
+  cases.emplace_back("three layers", polygon_with_spokes({ P(0, 0), P(4, 0), P(4, 0.3), P(4, 0.6), P(4, 1), P(0, 1), P(0, 0.6),
+                                                           P(0, 0.3) },
+                                                         { { { 7, 2 } }, { { 6, 3 } } }));
+  std::vector<P> disc = qm2_test::disc(0, 0, 1, 20);
+  cases.emplace_back("five spokes 72 degrees apart",
+                     polygon_with_spokes(disc, { { { 20, 0 } }, { { 20, 4 } }, { { 20, 8 } }, { { 20, 12 } }, { { 20, 16 } } },
+                                         { P(0, 0) }));
+  for(const auto& [name, d] : cases) {
+    SCOPED_TRACE(name);
+    const QM::Quad_mesh_2<K::Point_2> mesh = Mesher(d).run();
+    const Face_holding face(d);
+    EXPECT_EQ(mesh.regions.size(), face.loops.loops.size());
+    EXPECT_TRUE(interfaces_are_edge_chains(mesh, d, face));
+    expect_angles_within_45_135(mesh);
+    EXPECT_EQ(QM::compute_quality(mesh).number_of_boundary_loops, 1u);
+  }
+}
+
+// A 3 x 3 checkerboard of two materials: nine faces, two regions by their attributes.
+TEST(Quadtree_mesher_2, a_checkerboard_of_two_materials_is_two_regions)
+{
+  Domain d;
+  const auto at = [](int i, int j) { return std::size_t(4 * j + i); };
+  for(int j = 0; j < 4; ++j)
+    for(int i = 0; i < 4; ++i) d.points.push_back(K::Point_2(i, j));
+  for(int j = 0; j < 4; ++j)
+    for(int i = 0; i < 3; ++i) d.segments.push_back({ at(i, j), at(i + 1, j) });
+  for(int j = 0; j < 3; ++j)
+    for(int i = 0; i < 4; ++i) d.segments.push_back({ at(i, j), at(i, j + 1) });
+  for(int j = 0; j < 3; ++j)
+    for(int i = 0; i < 3; ++i) d.region_attributes.push_back({ K::Point_2(i + 0.5, j + 0.5), double(1 + (i + j) % 2), 0 });
+  const QM::Quad_mesh_2<K::Point_2> mesh = Mesher(d).run();
+  ASSERT_EQ(mesh.regions.size(), 2u);
+  EXPECT_EQ(mesh.regions[0].tag, 1);
+  EXPECT_EQ(mesh.regions[1].tag, 2);
+  auto material = [](const QM::Quad_mesh_2<K::Point_2>& m, std::size_t q) {
+    const auto& v = m.quads[q];
+    const K::Point_2 c = CGAL::centroid(m.points[v[0]], m.points[v[1]], m.points[v[2]], m.points[v[3]]);
+    return std::size_t(int(std::floor(CGAL::to_double(c.x())) + std::floor(CGAL::to_double(c.y()))) % 2);
+  };
+  EXPECT_TRUE(interfaces_are_edge_chains(mesh, d, material));
+  expect_angles_within_45_135(mesh);
+}
+
+// Expects every angle of `mesh` within [45, 135] but angles under 45 at `corner`, a sharp
+// input corner; returns how many there are.
+std::size_t angles_under_45_only_at(const QM::Quad_mesh_2<K::Point_2>& mesh, const K::Point_2& corner)
+{
+  EXPECT_TRUE(QM::compute_quality(mesh).is_valid());
+  std::size_t sharp = 0;
+  for(std::size_t q = 0; q < mesh.quads.size(); ++q)
+    for(int c = 0; c < 4; ++c) {
+      const double angle = qm2_checks::corner_angle(mesh, q, c);
+      EXPECT_LE(angle, 135.0 + 1e-7);
+      if(angle >= 45.0 - 1e-7) continue;
+      ++sharp;
+      EXPECT_EQ(mesh.points[mesh.quads[q][c]], corner) << angle;
+    }
+  return sharp;
+}
+
+// A crack from a corner of the domain and three cracks meeting inside it: the faces walk
+// around them; every crack a chain of inner mesh edges.
+TEST(Quadtree_mesher_2, cracks_from_a_corner_and_meeting_at_a_junction_are_edge_chains)
+{
+  typedef K::Point_2 P;
+  const Domain tail = polygon_with_spokes(qm2_test::rectangle(0, 0, 4, 4), { { { 0, 4 } } }, { P(2, 1.5) });
+  const QM::Quad_mesh_2<K::Point_2> walked = Mesher(tail).run();
+  EXPECT_TRUE(crack_is_an_edge_chain(walked, { P(0, 0), P(2, 1.5) }));
+  EXPECT_EQ(angles_under_45_only_at(walked, P(0, 0)), 1u); // the crack leaves the corner at 36.9 degrees
+  const Domain y = polygon_with_spokes(qm2_test::rectangle(0, 0, 4, 4), { { { 4, 5 } }, { { 4, 6 } }, { { 4, 7 } } },
+                                       { P(2, 2), P(1, 1), P(3, 1.2), P(2.2, 3) });
+  const QM::Quad_mesh_2<K::Point_2> branched = Mesher(y).run();
+  for(std::size_t end : { 5u, 6u, 7u }) EXPECT_TRUE(crack_is_an_edge_chain(branched, { y.points[4], y.points[end] })) << end;
+  expect_angles_within_45_135(branched);
+  EXPECT_EQ(QM::compute_quality(branched).number_of_boundary_loops, 1u);
+}
+
+// The shared case `cgal_butterfly`: eight segments meet at the origin, six faces in the
+// domain with corners of 31.9 and 39.1 degrees there, which only their own quads keep.
+TEST(Quadtree_mesher_2, the_shared_butterfly_keeps_its_junction_s_sharp_corners_only)
+{
+  Domain d;
+  std::string error;
+  ASSERT_TRUE(QM::IO::read_poly(std::string(QM2_SHARED_DATA_DIR) + "/cgal_butterfly/cgal_butterfly.poly", d, &error)) << error;
+  Mesher mesher(d);
+  const QM::Quad_mesh_2<K::Point_2> mesh = mesher.run();
+  EXPECT_TRUE(interfaces_are_edge_chains(mesh, d, Face_holding(d)));
+  EXPECT_TRUE(QM::compute_quality(mesh).is_valid());
+  EXPECT_EQ(angles_under_45_only_at(mesh, K::Point_2(0, 0)), 6u); // one quad in each face's corner there
+  EXPECT_EQ(mesher.buffer_report().bad_angle_quads, 0u);
 }
 
 TEST(Quadtree_mesher_2, stage_timings_are_recorded)

@@ -358,6 +358,26 @@ TEST(Boundary_layers, a_crack_is_no_wall)
   }
 }
 
+// Junctions are not taken yet: the error names the vertex.
+TEST(Boundary_layers, a_junction_is_named_as_not_taken_yet)
+{
+  QM::Domain_2<K> d = qm2_test::polygons({ { Point_2(0, 0), Point_2(5, 0), Point_2(10, 0), Point_2(10, 10), Point_2(5, 10),
+                                             Point_2(0, 10) },
+                                           qm2_test::rectangle(2, 4, 3, 6) });
+  d.segments.push_back({ 1, 4 });
+  d.holes = { Point_2(2.5, 5) };
+  d.segment_markers.assign(d.segments.size(), 1);
+  for(std::size_t s = 6; s < 10; ++s) d.segment_markers[s] = 2;
+  try {
+    mesh_with_layers(d, 3, 1e-2, 1.2, { 2 });
+    ADD_FAILURE() << "no Meshing_error";
+  } catch(const QM::Meshing_error& e) {
+    EXPECT_NE(std::string(e.what()).find("vertex 1 (5, 0) joins 3 segments: boundary layers do not take junctions"),
+              std::string::npos)
+      << e.what();
+  }
+}
+
 TEST(Boundary_layers, bad_values_are_clear_errors)
 {
   EXPECT_THROW(QM::Boundary_layer_criteria_2(0, 1e-3, 1.2), QM::Meshing_error);

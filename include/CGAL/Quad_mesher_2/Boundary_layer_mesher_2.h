@@ -97,7 +97,7 @@ public:
       throw Meshing_error("boundary layers need a domain bounded by segments, not a point cloud");
     auto start = std::chrono::steady_clock::now();
     m_loops = extract_loops(m_domain, m_traits);
-    internal::reject_junctions(m_domain, m_loops);
+    internal::reject_junctions(m_domain, "boundary layers");
     m_walls = internal::wall_loops(m_domain, m_loops, m_layers.wall_markers());
     internal::Wall_offsetter<GeomTraits>(m_domain, m_loops, m_walls, m_layers.layers(), m_layers.thickness(),
                                          m_layers.first_height() / m_layers.thickness())

@@ -661,7 +661,7 @@ Domain_2<K> decompose_domain_curves(const Domain_2<K>& domain, const Curve_decom
 {
   internal::curves_check_options(options);
   const Domain_loops_2<K> loops = extract_loops(domain, traits);
-  internal::reject_junctions(domain, loops);
+  internal::reject_junctions(domain, "curve decompositions");
   if(loops.loops.empty()) return domain;
   double tol = options.max_chord_error;
   if(tol == 0) tol = 1e-3 * internal::curves_bbox_diagonal(domain.points, traits);

@@ -17,10 +17,12 @@ namespace Quad_mesher_2 {
 /// A planar input in the sense of Triangle's `.poly` files: points, segments between them and
 /// hole seed points.
 ///
-/// - `segments`: each is two 0-based indices into `points`. The segments form boundary
-///   <em>loops</em>: closed chains, in which every point on a segment is the end of exactly two.
+/// - `segments`: each is two 0-based indices into `points`; they may meet only at their end
+///   points. They form boundary <em>loops</em> (closed chains), open polylines inside the
+///   domain (cracks) and, where three or more meet at a point (a junction), faces of an
+///   arrangement: regions meshed together, sharing the nodes of the segments between them.
 ///   The outer loop and the hole loops are given alike, in either orientation (the mesher
-///   orients them, see `extract_loops()`); loops must be simple and disjoint.
+///   orients them, see `extract_loops()`).
 /// - `holes`: a hole is marked by a seed point strictly inside it (not on a segment), which
 ///   makes the region it lies in outside the domain; with seed points, every hole needs one.
 ///   With none at all, nesting decides: inside an outermost loop is domain, inside a loop

@@ -419,12 +419,11 @@ private:
   void sort_counterclockwise(std::size_t v, std::vector<std::size_t>& ring) const
   {
     const Point_2& o = m_d.points[v];
-    const auto cmp_y = m_traits.compare_y_2_object();
+    const auto less_y = m_traits.less_y_2_object();
     const auto cmp_x = m_traits.compare_x_2_object();
     const auto orient = m_traits.orientation_2_object();
     auto upper = [&](const Point_2& q) { // angle in [0, 180)
-      const Comparison_result cy = cmp_y(q, o);
-      return cy == LARGER || (cy == EQUAL && cmp_x(q, o) == LARGER);
+      return less_y(o, q) || (!less_y(q, o) && cmp_x(q, o) == LARGER);
     };
     std::sort(ring.begin(), ring.end(), [&](std::size_t g, std::size_t h) {
       const Point_2& a = m_d.points[target(g)];
@@ -810,13 +809,19 @@ FT loops_balanced_sum(std::vector<FT> v)
 /// Validates the segments of `domain` and returns them as closed, oriented boundary loops,
 /// with the points that lie on no segment.
 ///
-/// **Semantics** (Triangle's, restricted to disjoint simple loops and cracks): every vertex on
-/// a segment must have two segments, or one at a free end, so the segments form closed loops
-/// and open polylines, and no two segments may meet except consecutive ones at their shared
-/// vertex. The loops cut the plane into regions: the unbounded one, and for each loop the part
-/// inside it but outside the loops directly nested in it. An open polyline is a crack: it must
+/// **Semantics** (Triangle's): the segments, which may meet only at their end points, form
+/// components joined at shared vertices. A component whose vertices each have two segments
+/// is a closed loop; one whose vertices have one or two is an open polyline, a crack: it must
 /// lie in the domain, and it is returned as a hole loop along it and back (v0 ... vk ... v1),
-/// its own twin (`Boundary_loop_2::twin`), which encloses nothing.
+/// its own twin (`Boundary_loop_2::twin`), which encloses nothing. A component with a
+/// junction (a vertex of three segments or more: a square split by a segment, a T, a
+/// checkerboard, cracks from a loop or meeting at a point) is an arrangement: each of its
+/// bounded faces is a region bounded by a counterclockwise loop, the cycle of segments with
+/// the face on its left (a crack inside the face walked along and back), and the outline of
+/// the whole component is a clockwise loop bounding the region around it. Loops of faces on
+/// both sides of a segment share it as twin edges (`Boundary_loop_2::edge_twins`). The loops
+/// cut the plane into regions: the unbounded one, and for each loop (each face) the part
+/// inside it but outside the loops directly nested in it.
 /// - With hole points, a region is in the domain iff it is bounded and contains no hole point
 ///   (Triangle's rule). A loop with the domain on both sides is an interface between two
 ///   regions: it is returned twice, as the outer loop of the region inside it and, right
@@ -836,8 +841,8 @@ FT loops_balanced_sum(std::vector<FT> v)
 ///
 /// \throws Meshing_error naming the problem, with 0-based indices and coordinates, for: a
 /// segment index out of range; a zero-length segment; a repeated segment; a loop of fewer
-/// than 3 vertices; a vertex with more than two segments (touching or branching loops); an
-/// open polyline outside the domain; a loop whose vertices are all collinear; two segments
+/// than 3 vertices; an open polyline outside the domain; a segment of a component with
+/// junctions that has the domain on neither side; a loop whose vertices are all collinear; two segments
 /// that cross, overlap, or touch (a vertex on another segment, or two vertices at the same
 /// place); a hole point on a segment or outside every loop; hole points on both sides of a
 /// loop (named by the one on the side nesting puts in the domain: inside a top loop, in an
@@ -853,26 +858,53 @@ Domain_loops_2<K> extract_loops(const Domain_2<K>& domain, const K& traits = K()
 
 namespace internal {
 
-/// Throws Meshing_error naming the first vertex of three segments or more: the buffer stages
-/// mesh loops that share no vertex, and cracks.
+/// Throws Meshing_error naming the first vertex of three segments or more, for `stage` (what
+/// does not take junctions yet: "boundary layers", "the curve decomposition").
 template <class K>
-void reject_junctions(const Domain_2<K>& domain, const Domain_loops_2<K>& loops)
+void reject_junctions(const Domain_2<K>& domain, const std::string& stage)
 {
   std::vector<std::size_t> degree(domain.points.size(), 0);
   for(const auto& sg : domain.segments) ++degree[sg[0]], ++degree[sg[1]];
   for(std::size_t v = 0; v < degree.size(); ++v)
     if(degree[v] > 2)
       throw Meshing_error("vertex " + domain.point_label(v) + " " + loops_format_point(domain.points[v], K()) + " joins " +
-                          std::to_string(degree[v]) + " segments into " + std::to_string(loops.loops.size()) +
-                          " loops: junctions (a vertex on three segments or more) are not meshed yet");
+                          std::to_string(degree[v]) + " segments: " + stage +
+                          " do not take junctions (a vertex on three segments or more) yet");
 }
 
-/// whether any loop of `loops` is an interface (has a twin)
+/// whether edge k of `loop` has the domain on both sides (Boundary_loop_2::edge_twins)
+template <class K>
+bool has_edge_twin(const Boundary_loop_2<K>& loop, std::size_t k)
+{
+  return loop.edge_twins[k][0] != std::size_t(-1);
+}
+
+/// whether edge k of loop l runs along a segment that a loop listed before it has the other
+/// way: a pass over the domain's segments that takes each once leaves it out
+template <class K>
+bool is_second_side(const Domain_loops_2<K>& loops, std::size_t l, std::size_t k)
+{
+  const std::size_t t = loops.loops[l].edge_twins[k][0];
+  return t != std::size_t(-1) && t < l;
+}
+
+/// whether vertex k of `loop` ends an edge with the domain on both sides: the mesh keeps it
+template <class K>
+bool on_edge_twin(const Boundary_loop_2<K>& loop, std::size_t k)
+{
+  const std::size_t n = loop.vertices.size();
+  return has_edge_twin(loop, k) || has_edge_twin(loop, (k + n - 1) % n);
+}
+
+/// whether any loop edge of `loops` has the domain on both sides (an interface, a crack, two
+/// faces at a junction)
 template <class K>
 bool has_interfaces(const Domain_loops_2<K>& loops)
 {
-  return std::any_of(loops.loops.begin(), loops.loops.end(),
-                     [](const Boundary_loop_2<K>& loop) { return loop.twin != std::size_t(-1); });
+  for(const Boundary_loop_2<K>& loop : loops.loops)
+    for(std::size_t k = 0; k < loop.vertices.size(); ++k)
+      if(has_edge_twin(loop, k)) return true;
+  return false;
 }
 
 /// the sum of the signed areas of the loops `take(loop)` picks, in `FT`

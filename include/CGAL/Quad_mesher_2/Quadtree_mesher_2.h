@@ -743,19 +743,15 @@ private:
     return msg.str();
   }
 
-  // the interface corners sharper than 45 degrees on either side: (input point, that angle)
+  // the corners sharper than 45 degrees at vertices on an interface: (input point, that angle)
   std::vector<std::pair<std::size_t, double>> sharp_interface_corners() const
   {
     std::vector<std::pair<std::size_t, double>> corners;
-    for(std::size_t l = 0; l < m_loops.loops.size(); ++l) {
-      const auto& loop = m_loops.loops[l];
-      if(loop.twin == std::size_t(-1) || loop.twin < l) continue;
+    for(const auto& loop : m_loops.loops)
       for(std::size_t k = 0; k < loop.vertices.size(); ++k) {
         const double a = internal::loop_corner_angle(m_domain, loop, k);
-        // a crack's tip is a corner of 360 degrees, not of 0
-        if(a < 360.0 && (std::min)(a, 360.0 - a) < 45.0) corners.emplace_back(loop.vertices[k], (std::min)(a, 360.0 - a));
+        if(a < 45.0 && internal::on_edge_twin(loop, k)) corners.emplace_back(loop.vertices[k], a);
       }
-    }
     return corners;
   }
 
@@ -892,10 +888,8 @@ private:
       throw Meshing_error("the input has no points");
     check_finite();
     merge_duplicate_points();
-    if(!m_domain.is_point_cloud()) {
+    if(!m_domain.is_point_cloud())
       m_loops = extract_loops(m_domain, m_traits); // validates the boundary first
-      internal::reject_junctions(m_domain, m_loops);
-    }
     m_grid_aligned_candidate = !m_domain.is_point_cloud() && m_loops.isolated_points.empty()
                                && internal::is_axis_parallel(m_domain, m_loops, m_traits);
     const auto box = points_box();
@@ -1023,7 +1017,7 @@ private:
       const double on = 1e-10 * locator.diagonal();
       for(std::size_t v = 0; v < xy.size(); ++v) {
         const internal::Loop_locator::Hit h = locator.closest(xy[v], on);
-        if(h.dist <= on && locator.twin(h.loop) != internal::Loop_locator::none) pinned[v] = 1;
+        if(h.dist <= on && locator.edge_twin(h.loop, h.edge)[0] != internal::Loop_locator::none) pinned[v] = 1;
       }
     }
     return pinned;

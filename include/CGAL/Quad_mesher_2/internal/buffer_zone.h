@@ -32,6 +32,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -94,6 +95,7 @@ public:
     : mesh(core), local_size(core_size), domain(input), loops(input_loops), traits(kernel)
   {
     locator = make_loop_locator(domain, loops);
+    find_interface_wedges();
     xy.reserve(mesh.points.capacity()); // the room the clearance left for the layers' points
     xy.resize(mesh.points.size());
     for(std::size_t v = 0; v < mesh.points.size(); ++v)
@@ -392,30 +394,45 @@ public:
   // every input vertex on the chain has its corner angle
   bool is_input_vertex(std::size_t v) const { return !std::isnan(input_corner_angle(v)); }
 
-  // An input vertex on an interface has a corner on either side, a and 360 - a (its corner
-  // angle is its first side's): the sharper and the wider of the two. Elsewhere both are the
-  // corner's angle.
+  // An input vertex on an interface has a corner in each region about it (a and 360 - a
+  // on an interface between two; more at a junction): the sharpest and the widest of them.
+  // Elsewhere both are the corner's angle.
   double sharp_corner_angle(std::size_t v) const
   {
-    const double a = input_corner_angle(v);
-    return on_interface(v) ? (std::min)(a, 360.0 - a) : a;
+    return on_interface(v) ? interface_wedges[v][0] : input_corner_angle(v);
   }
   double wide_corner_angle(std::size_t v) const
   {
-    const double a = input_corner_angle(v);
-    return on_interface(v) ? (std::max)(a, 360.0 - a) : a;
+    return on_interface(v) ? interface_wedges[v][1] : input_corner_angle(v);
   }
-  bool on_interface(std::size_t v) const { return v < interface_mark.size() && interface_mark[v] != 0; }
+  bool on_interface(std::size_t v) const { return v < interface_wedges.size() && !std::isnan(interface_wedges[v][0]); }
+
+  // per input point on an interface, the sharpest and the widest corner of the domain there
+  void find_interface_wedges()
+  {
+    for(std::size_t l = 0; l < loops.loops.size(); ++l)
+      for(std::size_t k = 0; k < loops.loops[l].vertices.size(); ++k) {
+        if(!on_edge_twin(loops.loops[l], k)) continue;
+        const double a = loop_corner_angle(domain, loops.loops[l], k);
+        auto [it, is_new] = wedges_at_input.emplace(loops.loops[l].vertices[k], std::array<double, 2>{ { a, a } });
+        it->second = { { (std::min)(it->second[0], a), (std::max)(it->second[1], a) } };
+        if(a < 45.0) sharp_wedges_at_input[loops.loops[l].vertices[k]].push_back(a);
+      }
+  }
 
   // true if `angle`, a quad's angle at mesh vertex v, is forced: v is an input corner sharper
   // than 45 degrees and the quad spans all of it (a split corner has less). The quad's other
   // three angles are not. A corner over 270 degrees forces nothing: a fan of three quads
-  // splits it within [45, 135]. On an interface, a quad on the wide side spans some other
-  // angle than the sharp side's.
+  // splits it within [45, 135]. On an interface, a quad spans one of the corners about v, so
+  // its angle is forced only if it is one of the sharp ones.
   bool forced_angle(std::size_t v, double angle) const
   {
     const double alpha = sharp_corner_angle(v);
-    return alpha < 45.0 && angle >= alpha - 1e-3 && (angle <= alpha + 1e-3 || !on_interface(v)); // false for NaN
+    if(!(alpha < 45.0)) return false; // false for NaN
+    if(!on_interface(v)) return angle >= alpha - 1e-3;
+    for(double a : sharp_wedges_at_input.at(interface_input[v]))
+      if(std::abs(angle - a) <= 1e-3) return true;
+    return false;
   }
 
   // true if an input corner (a loop vertex turning by the feature angle or more) at an end of
@@ -493,9 +510,11 @@ public:
     input_vertex[input] = id;
     corner_angle.resize(id + 1, std::numeric_limits<double>::quiet_NaN());
     corner_angle[id] = loop_corner_angle(domain, loops.loops[l], k);
-    if(loops.loops[l].twin != none) {
-      interface_mark.resize(id + 1, 0);
-      interface_mark[id] = 1;
+    if(const auto it = wedges_at_input.find(input); it != wedges_at_input.end()) {
+      interface_wedges.resize(id + 1, { { std::numeric_limits<double>::quiet_NaN(), 0.0 } });
+      interface_wedges[id] = it->second;
+      interface_input.resize(id + 1, none);
+      interface_input[id] = input;
     }
     return id;
   }
@@ -630,7 +649,11 @@ public:
   std::vector<std::size_t> first_core; // core vertex of each first buffer point
   std::vector<std::size_t> input_vertex; // per input point: its mesh point, or none
   std::vector<double> corner_angle; // per mesh point: its input corner's angle, or NaN
-  std::vector<char> interface_mark; // per mesh point: an input vertex on an interface (or none)
+  // per mesh point: an input vertex on an interface, its sharpest and widest corner (NaN: none)
+  std::vector<std::array<double, 2>> interface_wedges;
+  std::vector<std::size_t> interface_input; // per mesh point on an interface: its input point
+  std::unordered_map<std::size_t, std::array<double, 2>> wedges_at_input; // by input point
+  std::unordered_map<std::size_t, std::vector<double>> sharp_wedges_at_input; // the corners under 45 degrees
   std::vector<Slide> slide_of; // per point: its Slide (loop none: it does not slide; see slide())
   std::vector<char> on_cycle_mark; // per core point
   std::vector<char> repaired_mark; // per point

@@ -115,9 +115,11 @@ public:
     const auto bbox = m_traits.construct_bbox_2_object();
     const auto seg = m_traits.construct_segment_2_object();
     for(std::size_t l = 0; l < m_loops.loops.size(); ++l) {
-      if(m_loops.loops[l].twin < l) continue; // an interface once, as the outer loop inside it
       const auto& v = m_loops.loops[l].vertices;
       for(std::size_t i = 0; i < v.size(); ++i) {
+        if(is_second_side(m_loops, l, i)) continue; // a segment once, as the first loop along it has it
+        const std::size_t twin = m_loops.loops[l].edge_twins[i][0];
+        m_twin_loop.push_back(twin == l ? outside : twin);
         const Point_2& a = m_domain.points[v[i]];
         const Point_2& b = m_domain.points[v[(i + 1) % v.size()]];
         m_ends.push_back({v[i], v[(i + 1) % v.size()]});
@@ -136,6 +138,8 @@ public:
   const Bbox_2& box(std::size_t s) const { return m_boxes[s]; }
   /// the loop (index into `Domain_loops_2::loops`) segment `s` belongs to
   std::size_t loop_of(std::size_t s) const { return m_loop[s]; }
+  /// the other loop along segment `s` (the other side of an interface), or `outside`
+  std::size_t twin_loop_of(std::size_t s) const { return m_twin_loop[s]; }
 
   /// calls `f(s)` for every segment `s` whose box overlaps `b`
   template <class F>
@@ -166,17 +170,26 @@ public:
       const Point_2& right = (ca == LARGER) ? a : b;
       const Orientation o = orient(left, right, p);
       if(o == COLLINEAR) on = s; // on a vertical segment p is found inside or outside
-      if(o == RIGHT_TURN) parity[m_loop[s]] ^= 1;  // p below the segment
+      if(o == RIGHT_TURN) { // p below the segment
+        parity[m_loop[s]] ^= 1;
+        if(m_twin_loop[s] != outside) parity[m_twin_loop[s]] ^= 1;
+      }
     });
     if(on != outside)
       return m_loops.loops[m_loop[on]].region;
+    // the deepest loop holding p; of an outer loop and a hole loop of one depth (twins along
+    // an interface, or a junction's face and the outline of its faces), the outer one
     int depth = -1;
+    bool outer = false;
     std::size_t region = outside;
-    for(std::size_t l = 0; l < parity.size(); ++l)
-      if(parity[l] && m_loops.loops[l].depth > depth) {
-        depth = m_loops.loops[l].depth;
-        region = m_loops.loops[l].is_outer ? m_loops.loops[l].region : outside;
+    for(std::size_t l = 0; l < parity.size(); ++l) {
+      const auto& loop = m_loops.loops[l];
+      if(parity[l] && (loop.depth > depth || (loop.depth == depth && loop.is_outer && !outer))) {
+        depth = loop.depth;
+        outer = loop.is_outer;
+        region = outer ? loop.region : outside;
       }
+    }
     return region;
   }
 
@@ -187,6 +200,7 @@ private:
   std::vector<std::array<std::size_t, 2>> m_ends;
   std::vector<Segment_2> m_segments;
   std::vector<std::size_t> m_loop;
+  std::vector<std::size_t> m_twin_loop;
   std::vector<Bbox_2> m_boxes;
   std::unique_ptr<Box_tree> m_tree; // keeps a reference to m_boxes
 };

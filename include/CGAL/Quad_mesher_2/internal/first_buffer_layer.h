@@ -280,10 +280,10 @@ private:
     return b + lambda * d;
   }
 
-  // whether `h`, a closest point on loop l, is the tip of a crack (see Boundary_loop_2::twin)
+  // whether `h`, a closest point on loop l, is the tip of a crack (is_crack_tip())
   bool at_crack_tip(std::size_t l, const Loop_locator::Hit& h) const
   {
-    if(m_zone.loops.loops[l].twin != l || (h.t > 0 && h.t < 1)) return false;
+    if(h.t > 0 && h.t < 1) return false;
     const std::size_t nv = m_zone.loops.loops[l].vertices.size();
     return is_crack_tip(m_zone.loops.loops[l], h.t == 0 ? h.edge : (h.edge + 1) % nv);
   }

@@ -41,12 +41,22 @@ public:
     Point_2d point = ORIGIN;
   };
 
-  /// `twins[l]`: the loop of the same points as l in the opposite order (an interface seen
-  /// from its other side), or none; empty if no loop has one
-  Loop_locator(std::vector<std::vector<Point_2d>> loops, std::vector<std::size_t> twins = {})
+  typedef std::array<std::size_t, 2> Edge; // loop, edge
+
+  /// `twins[l][k]`: the loop edge along edge k of loop l the other way (the domain on both
+  /// sides: see Boundary_loop_2::edge_twins), or {none, none}; empty if no edge has one
+  Loop_locator(std::vector<std::vector<Point_2d>> loops, std::vector<std::vector<Edge>> twins = {})
     : m_loops(std::move(loops)), m_twin(std::move(twins))
   {
-    m_twin.resize(m_loops.size(), none);
+    m_twin.resize(m_loops.size());
+    m_neighbors.resize(m_loops.size());
+    for(std::size_t l = 0; l < m_loops.size(); ++l) {
+      m_twin[l].resize(m_loops[l].size(), Edge{ { none, none } });
+      for(const Edge& e : m_twin[l])
+        if(e[0] != none) m_neighbors[l].push_back(e[0]);
+      std::sort(m_neighbors[l].begin(), m_neighbors[l].end());
+      m_neighbors[l].erase(std::unique(m_neighbors[l].begin(), m_neighbors[l].end()), m_neighbors[l].end());
+    }
     std::vector<Bbox_2>& boxes = m_boxes; // the box tree keeps a reference
     double xmin = HUGE_VAL, xmax = -HUGE_VAL, ymin = HUGE_VAL, ymax = -HUGE_VAL;
     m_arc.resize(m_loops.size());
@@ -79,14 +89,13 @@ public:
     return m_arc[h.loop][h.edge] + h.t * (m_arc[h.loop][h.edge + 1] - m_arc[h.loop][h.edge]);
   }
 
-  /// the loop of the same points as `l` in the opposite order, or none
-  std::size_t twin(std::size_t l) const { return m_twin[l]; }
+  /// the loop edge along edge k of loop l the other way, or {none, none}
+  const Edge& edge_twin(std::size_t l, std::size_t k) const { return m_twin[l][k]; }
 
   /// the closest point to `p` on loop `l` (any loop if `l` is none), searching first within
-  /// `radius` of `p` (with `other_than`: on any loop but `l` and its twin). Of equally near
-  /// edges the one of the lower loop index is found: of twins, the first. On a crack (a loop
-  /// that is its own twin), the side facing `p`: of an edge and its reverse, the one that has
-  /// `p` on its left.
+  /// `radius` of `p` (with `other_than`: on any loop but `l` and those sharing an edge with
+  /// it). Of an edge and its twin (the same segment the other way), the one that has `p` on
+  /// its left; of other equally near edges, the one of the lower loop index.
   Hit closest(const Point_2d& p, double radius, std::size_t l = none, bool other_than = false) const
   {
     Hit best;
@@ -94,7 +103,8 @@ public:
     for(;;) {
       m_tree->query(Bbox_2(p.x() - r, p.y() - r, p.x() + r, p.y() + r), [&](std::size_t s) {
         const std::size_t on = m_edge_of[s][0];
-        if(l != none && (other_than ? on == l || on == m_twin[l] : on != l)) return;
+        if(l != none && (other_than ? on == l || std::binary_search(m_neighbors[l].begin(), m_neighbors[l].end(), on) : on != l))
+          return;
         Hit h = on_edge(p, m_edge_of[s][0], m_edge_of[s][1]);
         // equally near edges (a point on a symmetry axis) by their index, not by rounding:
         // the same choice on a scaled or moved domain
@@ -141,16 +151,16 @@ public:
   static constexpr std::size_t none = std::size_t(-1);
 
 private:
-  // equally near edges by loop, then on a crack the side facing p first, then by index
+  // equally near edges: of twins the side facing p first, then by loop and index
   std::array<std::size_t, 3> tie_order(const Point_2d& p, const Hit& h) const
   {
     if(h.dist == std::numeric_limits<double>::infinity()) return { none, none, none };
     bool facing = true;
-    if(m_twin[h.loop] == h.loop) {
+    if(m_twin[h.loop][h.edge][0] != none) {
       const auto& v = m_loops[h.loop];
       facing = CGAL::determinant(v[(h.edge + 1) % v.size()] - v[h.edge], p - v[h.edge]) > 0;
     }
-    return { h.loop, facing ? 0u : 1u, h.edge };
+    return { facing ? 0u : 1u, h.loop, h.edge };
   }
 
   Hit on_edge(const Point_2d& p, std::size_t l, std::size_t k) const
@@ -168,7 +178,8 @@ private:
   }
 
   std::vector<std::vector<Point_2d>> m_loops;
-  std::vector<std::size_t> m_twin;
+  std::vector<std::vector<Edge>> m_twin;
+  std::vector<std::vector<std::size_t>> m_neighbors; // per loop, the loops sharing an edge with it
   std::vector<std::array<std::size_t, 2>> m_edge_of;
   std::vector<std::vector<double>> m_arc;
   std::vector<Bbox_2> m_boxes;
@@ -182,11 +193,11 @@ template <class K>
 std::unique_ptr<Loop_locator> make_loop_locator(const Domain_2<K>& domain, const Domain_loops_2<K>& loops)
 {
   std::vector<std::vector<Point_2d>> pts(loops.loops.size());
-  std::vector<std::size_t> twins(loops.loops.size());
+  std::vector<std::vector<Loop_locator::Edge>> twins(loops.loops.size());
   for(std::size_t l = 0; l < loops.loops.size(); ++l) {
     for(std::size_t v : loops.loops[l].vertices)
       pts[l].push_back(to_point_2d(domain.points[v]));
-    twins[l] = loops.loops[l].twin;
+    twins[l] = loops.loops[l].edge_twins;
   }
   return std::make_unique<Loop_locator>(std::move(pts), std::move(twins));
 }

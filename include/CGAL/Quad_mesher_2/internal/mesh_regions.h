@@ -33,9 +33,9 @@ namespace CGAL {
 namespace Quad_mesher_2 {
 namespace internal {
 
-/// Which side of an interface a mesh edge lies on: the interface loop (of the twins, the
-/// one that has the domain on its left, see `Boundary_loop_2::twin`) whose left side the
-/// half-edge a -> b runs along, found at the edge's midpoint.
+/// Which side of an interface a mesh edge lies on: the loops on either side of the half-edge
+/// a -> b (of an edge and its twin, see `Boundary_loop_2::edge_twins`), found at the edge's
+/// midpoint.
 template <class K>
 class Interface_sides
 {
@@ -51,17 +51,20 @@ public:
     m_on = 1e-10 * m_locator->diagonal();
   }
 
-  /// the interface loop that has half-edge a -> b on its left, or none if the edge lies on no interface
-  std::size_t loop_on_the_right(std::size_t a, std::size_t b) const
+  /// the interface loops that have half-edge a -> b on their left and on their right, or
+  /// none if the edge lies on no interface
+  std::array<std::size_t, 2> loops_beside(std::size_t a, std::size_t b) const
   {
-    if(!m_has_interfaces) return none;
+    if(!m_has_interfaces) return { none, none };
     const Point_2d pa = to_point_2d(m_mesh.points[a]), pb = to_point_2d(m_mesh.points[b]);
     const Loop_locator::Hit h = m_locator->closest(CGAL::midpoint(pa, pb), m_on);
-    const std::size_t twin = m_locator->twin(h.loop);
-    if(h.dist > m_on || twin == none) return none;
+    if(h.dist > m_on) return { none, none };
+    const std::size_t twin = m_locator->edge_twin(h.loop, h.edge)[0];
+    if(twin == none) return { none, none };
     const auto& loop = m_locator->loop(h.loop);
     const Vector_2d along = loop[(h.edge + 1) % loop.size()] - loop[h.edge];
-    return along * (pb - pa) > 0 ? h.loop : twin;
+    if(along * (pb - pa) > 0) return { h.loop, twin };
+    return { twin, h.loop };
   }
 
 private:
@@ -145,13 +148,13 @@ void assign_regions(Quad_mesh_2<typename K::Point_2>& mesh, const Domain_2<K>& d
         const auto& f = half_edges[y];
         if(source(e) == source(f) || e[2] == f[2]) continue;
         on_boundary[4 * e[2] + e[3]] = on_boundary[4 * f[2] + f[3]] = 0;
-        const std::size_t loop = interfaces.loop_on_the_right(source(e), source(f));
-        if(loop == none) {
+        const std::array<std::size_t, 2> beside = interfaces.loops_beside(source(e), source(f));
+        if(beside[0] == none) {
           piece[find(e[2])] = find(f[2]);
           continue;
         }
-        region_of_quad[e[2]] = output_region[loops.loops[loop].region];
-        region_of_quad[f[2]] = output_region[loops.loops[loops.loops[loop].twin].region];
+        region_of_quad[e[2]] = output_region[loops.loops[beside[0]].region];
+        region_of_quad[f[2]] = output_region[loops.loops[beside[1]].region];
       }
   }
   std::size_t boundary_edge = 0;

@@ -72,11 +72,18 @@ public:
     bool two_sided = false; // on an interface: the domain on both sides
   };
 
+  // a vertex where loops meet (a junction), and its arc length along one of them
+  typedef std::pair<std::size_t, double> Junction;
+
+  // `junctions[l]`: the junctions on loop l (none if empty), through which the way along the
+  // boundary passes from one loop to another
   explicit Boundary_gap_finder(std::vector<Segment> segments, std::vector<double> loop_lengths,
-                               double detour = 2.0)
-    : m_segments(std::move(segments)), m_loop_lengths(std::move(loop_lengths)), m_detour(detour),
-      m_boxes(boxes(m_segments)), m_tree(m_boxes)
-  {}
+                               std::vector<std::vector<Junction>> junctions = {}, double detour = 2.0)
+    : m_segments(std::move(segments)), m_loop_lengths(std::move(loop_lengths)), m_junctions(std::move(junctions)),
+      m_detour(detour), m_boxes(boxes(m_segments)), m_tree(m_boxes)
+  {
+    m_junctions.resize(m_loop_lengths.size());
+  }
   Boundary_gap_finder(const Boundary_gap_finder&) = delete;
   Boundary_gap_finder& operator=(const Boundary_gap_finder&) = delete;
 
@@ -147,20 +154,32 @@ private:
       const double width = outside ? outside_gap_weight * d : d;
       if(width >= best)
         return;
-      if(s.loop == here.loop) {
-        double along = std::abs(s.arc_a + t * s.length - arc);
-        along = (std::min)(along, m_loop_lengths[s.loop] - along);
-        if(along <= m_detour * d)
-          return; // a neighbour along the loop, not the other side of a gap
-      }
+      if(along_the_boundary(here.loop, arc, s.loop, s.arc_a + t * s.length) <= m_detour * d)
+        return; // a neighbour along the boundary, not the other side of a gap
       best = width;
       nearest = c;
     });
     return best;
   }
 
-  // Loops share no vertex, and each vertex is the target of one of its loop's segments and
-  // the source of the next (on a crack, twice: see meet_on_a_crack()).
+  // The way along the boundary from arc length `a` of loop `la` to `b` of loop `lb`: along
+  // the loop, or through a junction on both; infinite if the loops meet at none.
+  double along_the_boundary(std::size_t la, double a, std::size_t lb, double b) const
+  {
+    auto along = [&](std::size_t l, double x, double y) {
+      const double d = std::abs(x - y);
+      return (std::min)(d, m_loop_lengths[l] - d);
+    };
+    if(la == lb) return along(la, a, b);
+    double best = HUGE_VAL;
+    for(const Junction& ja : m_junctions[la])
+      for(const Junction& jb : m_junctions[lb])
+        if(ja.first == jb.first) best = (std::min)(best, along(la, a, ja.second) + along(lb, jb.second, b));
+    return best;
+  }
+
+  // Each vertex is the target of one of its loop's segments and the source of the next (on a
+  // crack, twice: see meet_on_a_crack(); at a junction, once in each loop about it).
   static bool consecutive(const Segment& s, const Segment& r)
   {
     return s.target_vertex == r.source_vertex || r.target_vertex == s.source_vertex;
@@ -201,17 +220,22 @@ private:
 
   std::vector<Segment> m_segments;
   std::vector<double> m_loop_lengths;
+  std::vector<std::vector<Junction>> m_junctions;
   double m_detour;
   std::vector<Bbox_2> m_boxes; // before m_tree, which keeps a reference to it
   Box_tree m_tree;             // the box tree the loop validation uses
 };
 
-// The domain's boundary as the gap finder's segments, loop after loop, and each loop's length;
-// an interface once, its twin loop left out (no segments, length 0).
+// The domain's boundary as the gap finder's segments, loop after loop, each segment once
+// (is_second_side()), each loop's length, and the junctions on each loop (vertices of three
+// segments or more).
 template <class K>
 std::vector<Boundary_gap_finder::Segment> gap_finder_segments(const Domain_2<K>& domain, const Domain_loops_2<K>& loops,
-                                                              const K& traits, std::vector<double>& loop_lengths)
+                                                              const K& traits, std::vector<double>& loop_lengths,
+                                                              std::vector<std::vector<Boundary_gap_finder::Junction>>& junctions)
 {
+  std::vector<std::size_t> degree(domain.points.size(), 0);
+  for(const auto& sg : domain.segments) ++degree[sg[0]], ++degree[sg[1]];
   typedef Boundary_gap_finder::P P;
   auto x_of = traits.compute_x_2_object();
   auto y_of = traits.compute_y_2_object();
@@ -220,19 +244,22 @@ std::vector<Boundary_gap_finder::Segment> gap_finder_segments(const Domain_2<K>&
     return P(CGAL::to_double(x_of(domain.points[v])), CGAL::to_double(y_of(domain.points[v])));
   };
   std::vector<Boundary_gap_finder::Segment> segments;
+  junctions.assign(loops.loops.size(), {});
   for(std::size_t l = 0; l < loops.loops.size(); ++l) {
     const auto& vs = loops.loops[l].vertices;
-    const bool twin_listed_before = loops.loops[l].twin < l;
-    const std::size_t n = twin_listed_before ? 0 : vs.size();
+    const std::size_t n = vs.size();
     double arc = 0;
     for(std::size_t k = 0; k < n; ++k) {
       const std::size_t before = vs[(k + n - 1) % n], source = vs[k], target = vs[(k + 1) % n];
+      if(degree[source] > 2) junctions[l].emplace_back(source, arc);
       const Boundary_gap_finder::S segment(xy(source), xy(target));
       const double length = std::sqrt(segment.squared_length());
-      // convex with the domain on the left: decided on the input points, exactly
-      const bool convex = orientation(domain.points[before], domain.points[source], domain.points[target]) == LEFT_TURN;
-      const bool needle = convex && Boundary_gap_finder::sharper_than_needle(xy(before), segment.source(), segment.target());
-      segments.push_back({ segment, source, target, l, arc, length, needle, loops.loops[l].twin != std::size_t(-1) });
+      if(!is_second_side(loops, l, k)) {
+        // convex with the domain on the left: decided on the input points, exactly
+        const bool convex = orientation(domain.points[before], domain.points[source], domain.points[target]) == LEFT_TURN;
+        const bool needle = convex && Boundary_gap_finder::sharper_than_needle(xy(before), segment.source(), segment.target());
+        segments.push_back({ segment, source, target, l, arc, length, needle, has_edge_twin(loops.loops[l], k) });
+      }
       arc += length;
     }
     loop_lengths.push_back(arc);
@@ -257,11 +284,12 @@ std::vector<Size_sample> narrow_region_samples(const Domain_2<K>& domain, const 
 {
   typedef Boundary_gap_finder::P P;
   std::vector<double> loop_lengths;
-  std::vector<Boundary_gap_finder::Segment> segments = gap_finder_segments(domain, loops, traits, loop_lengths);
+  std::vector<std::vector<Boundary_gap_finder::Junction>> junctions;
+  std::vector<Boundary_gap_finder::Segment> segments = gap_finder_segments(domain, loops, traits, loop_lengths, junctions);
   std::vector<Size_sample> samples;
   if(segments.empty())
     return samples;
-  const Boundary_gap_finder finder(std::move(segments), std::move(loop_lengths));
+  const Boundary_gap_finder finder(std::move(segments), std::move(loop_lengths), std::move(junctions));
   // Gaps wider than this many times the local segment length leave the cells to the point
   // spacing: they cannot make a region narrow.
   const double reach_factor = 4;

@@ -382,7 +382,9 @@ public:
         split = side > bound_at(m_tree.lattice_point(k.level, k.i + (c & 1), k.j + (c >> 1)));
       if(!split)
         boundary.query(m_tree.cell_rectangle(k).bbox(), [&](std::size_t s) {
-          split = split || side > bound[m_loops.loops[boundary.loop_of(s)].region];
+          const std::size_t twin = boundary.twin_loop_of(s);
+          split = split || side > bound[m_loops.loops[boundary.loop_of(s)].region]
+                  || (twin != boundary.outside && side > bound[m_loops.loops[twin].region]);
         });
       return split;
     });
@@ -439,11 +441,11 @@ public:
     std::vector<Band> bands;
     for(std::size_t l = 0; l < m_loops.loops.size(); ++l) {
       const auto& loop = m_loops.loops[l];
-      if(loop.twin < l) continue; // an interface once
       std::vector<Point_2d> xy;
       for(std::size_t v : loop.vertices) xy.push_back(to_point_2d(m_domain.points[v]));
       const Loop_turning turning(xy);
       for(std::size_t k = 0; k < xy.size(); ++k) {
+        if(is_second_side(m_loops, l, k)) continue; // a segment once
         const Vector_2d d = xy[(k + 1) % xy.size()] - xy[k];
         const double length = length_2d(d);
         for(double t = 0; t < 1;) {
@@ -483,13 +485,11 @@ private:
   std::vector<Point_2d> points_in_own_cells() const
   {
     std::vector<Point_2d> own;
-    for(std::size_t l = 0; l < m_loops.loops.size(); ++l) {
-      const auto& loop = m_loops.loops[l];
-      if(loop.twin < l) continue; // an interface once
+    for(const auto& loop : m_loops.loops) {
       const std::size_t n = loop.vertices.size();
       for(std::size_t k = 0; k < n; ++k) {
         const Point_2d p = to_point_2d(m_domain.points[loop.vertices[k]]);
-        if(loop.twin != std::size_t(-1) // an interface keeps every vertex
+        if(on_edge_twin(loop, k) // an interface keeps every vertex
            || is_loop_feature(to_point_2d(m_domain.points[loop.vertices[(k + n - 1) % n]]), p,
                               to_point_2d(m_domain.points[loop.vertices[(k + 1) % n]])))
           own.push_back(p);

@@ -78,6 +78,7 @@ public:
     if(!m_projection.project()) return;
     add_plan(on_interface_built_from_the_other_side() ? plan_on_twin_chain()
              : on_crack()                             ? plan_on_crack()
+             : shares_edges()                         ? plan_on_shared_edges()
                                                       : best_plan());
   }
 
@@ -91,6 +92,65 @@ private:
   // twin): its two sides must share their nodes
   bool on_crack() const { return m_zone.loops.loops[l].twin == l; }
 
+  // whether an edge of the cycle's loop has the domain on both sides, the loop being no
+  // interface's and no crack's whole: a face of a junction's arrangement
+  bool shares_edges() const
+  {
+    for(std::size_t k = 0; k < nv; ++k)
+      if(has_edge_twin(m_zone.loops.loops[l], k)) return true;
+    return false;
+  }
+
+  // whether edge k takes its nodes from its twin: the edge of a loop built before (listed
+  // before it) or, of an edge and its reverse on this loop, the later
+  bool takes_twins_nodes(std::size_t k) const
+  {
+    const auto& twin = m_zone.loops.loops[l].edge_twins[k];
+    return twin[0] != none && (twin[0] < l || (twin[0] == l && twin[1] < k));
+  }
+
+  // A face of a junction's arrangement: the pairing chooses the nodes on the edges of its
+  // own (free, or shared with a loop built later), as best_plan() does; the edges shared with
+  // a loop built before take that loop's nodes, and those along an edge's reverse on this
+  // loop (a crack in the face) the nodes of the edge. Then the strip is paired onto that
+  // chain, with extra nodes only on its own edges.
+  Strip_plan plan_on_shared_edges()
+  {
+    bool any_own = false;
+    for(std::size_t k = 0; k < nv; ++k) any_own = any_own || !takes_twins_nodes(k);
+    Strip_plan own;
+    if(any_own) {
+      own = best_plan();
+      if(!own.ok) return own;
+    }
+    std::vector<std::size_t> chosen = own.gid;
+    std::sort(chosen.begin(), chosen.end());
+    auto was_chosen = [&](std::size_t id) { return std::binary_search(chosen.begin(), chosen.end(), id); };
+    const Loop_locator& at = *m_zone.locator;
+    const Boundary_loop_2<K>& loop = m_zone.loops.loops[l];
+    std::vector<std::pair<double, std::size_t>> by_param; // arclength, mesh id
+    std::vector<std::size_t> fixed;                        // the nodes of loops built before
+    for(std::size_t k = 0; k < nv; ++k)
+      if(on_edge_twin(loop, k) || was_chosen(m_zone.point_of_input(loop.vertices[k])))
+        by_param.emplace_back(at.arc(l, k), m_zone.input_vertex_point(l, k));
+    for(std::size_t id : own.gid)
+      if(const auto* slide = m_zone.slide(id); slide != nullptr && slide->loop == l && !takes_twins_nodes(slide->edge))
+        by_param.emplace_back(at.arc(l, slide->edge) + length_2d(m_zone.xy[id] - loop_xy[slide->edge]), id);
+    for(std::size_t k = 0; k < nv; ++k) {
+      if(!takes_twins_nodes(k)) continue;
+      const auto& twin = loop.edge_twins[k];
+      const std::vector<std::size_t>& source = twin[0] == l ? own.gid : m_zone.loop_chain[twin[0]];
+      if(source.empty()) return Strip_plan(); // not ok: the twin's strip failed
+      const double length = at.arc(l, k + 1) - at.arc(l, k);
+      for(std::size_t id : source)
+        if(const auto* slide = m_zone.slide(id); slide != nullptr && slide->loop == twin[0] && slide->edge == twin[1]) {
+          by_param.emplace_back(at.arc(l, k) + length - length_2d(m_zone.xy[id] - at.loop(twin[0])[twin[1]]), id);
+          if(twin[0] != l) fixed.push_back(id);
+        }
+    }
+    return plan_without_flat_crack_nodes(std::move(by_param), fixed, true);
+  }
+
   // The pairing onto the chain the twin's strip made: each F point takes the chain node
   // nearest its projection (in order along the loop), with no node added or left out.
   Strip_plan plan_on_twin_chain()
@@ -102,7 +162,7 @@ private:
       const Loop_locator::Hit h = m_zone.locator->closest(m_zone.xy[id], 1e-9 * m_zone.locator->diagonal(), l);
       by_param.emplace_back(m_zone.locator->param(h), id);
     }
-    return plan_on_chain(std::move(by_param));
+    return plan_on_chain(std::move(by_param), false);
   }
 
   // A crack's strip: the pairing chooses the nodes along the polyline's first side (loop
@@ -127,24 +187,29 @@ private:
         by_param.emplace_back(at.arc(l, e) + from_start, id);
         by_param.emplace_back(at.arc(l, nv - 1 - e) + (at.arc(l, e + 1) - at.arc(l, e)) - from_start, id);
       }
-    return plan_without_flat_crack_nodes(std::move(by_param));
+    return plan_without_flat_crack_nodes(std::move(by_param), {}, false);
   }
 
   // The pairing onto a crack's chain (plan_on_chain()); where a side's F point must fan over
   // three chain nodes in a row into an invalid quad, or one with the boundary's angle out of
   // range (the other side, a reflex corner's, took more nodes there), the middle node leaves
   // both sides if it is no input vertex, else its two neighbours that are none, and the strip
-  // is paired again, while that lowers its cost.
-  Strip_plan plan_without_flat_crack_nodes(std::vector<std::pair<double, std::size_t>> by_param)
+  // is paired again, while that lowers its cost. The nodes in `fixed` (a strip built before
+  // has them) stay.
+  Strip_plan plan_without_flat_crack_nodes(std::vector<std::pair<double, std::size_t>> by_param,
+                                           const std::vector<std::size_t>& fixed, bool with_extra_nodes)
   {
-    Strip_plan plan = plan_on_chain(by_param);
+    Strip_plan plan = plan_on_chain(by_param, with_extra_nodes);
     for(int attempt = 0; attempt < 8 && plan.best.cost.sum >= 1e12; ++attempt) {
-      const std::vector<std::size_t> leave_out = nodes_about_invalid_fans(plan);
+      std::vector<std::size_t> leave_out = nodes_about_invalid_fans(plan);
+      leave_out.erase(std::remove_if(leave_out.begin(), leave_out.end(),
+                                     [&](std::size_t id) { return std::find(fixed.begin(), fixed.end(), id) != fixed.end(); }),
+                      leave_out.end());
       if(leave_out.empty()) break;
       std::vector<std::pair<double, std::size_t>> fewer;
       for(const auto& node : by_param)
         if(std::find(leave_out.begin(), leave_out.end(), node.second) == leave_out.end()) fewer.push_back(node);
-      Strip_plan again = plan_on_chain(fewer);
+      Strip_plan again = plan_on_chain(fewer, with_extra_nodes);
       if(!(again.best.cost < plan.best.cost)) break;
       plan = std::move(again);
       by_param = std::move(fewer);
@@ -176,15 +241,22 @@ private:
   }
 
   // The pairing onto a given chain (arclength along this loop, mesh id): each F point takes
-  // the chain node nearest its projection (in order along the loop), with no node added or
-  // left out.
-  Strip_plan plan_on_chain(std::vector<std::pair<double, std::size_t>> by_param)
+  // the chain node nearest its projection (in order along the loop), with no node left out,
+  // and none added but, `with_extra_nodes`, a gap's extra node on an edge whose nodes are not
+  // settled (on_settled_edge()).
+  Strip_plan plan_on_chain(std::vector<std::pair<double, std::size_t>> by_param, bool with_extra_nodes)
   {
     Strip_plan plan;
     const Strip_positions proj = m_projection.spread(std::vector<bool>(nv, false));
     Strip_nodes strip = chain_from(std::move(by_param), proj.P[0]);
     give_first_points_their_nearest_nodes(strip, proj.P);
-    plan.best = m_pairing.pair(strip.fid, strip.gid, strip.g, std::vector<Extra_node>(n));
+    if(with_extra_nodes) {
+      m_extra_off_settled_edges = true;
+      plan.best = pair_strip_nodes(strip);
+      m_extra_off_settled_edges = false;
+    } else {
+      plan.best = m_pairing.pair(strip.fid, strip.gid, strip.g, std::vector<Extra_node>(n));
+    }
     plan.ok = true;
     plan.gid = std::move(strip.gid);
     return plan;
@@ -283,13 +355,13 @@ private:
     std::vector<Node> nodes;
     std::vector<bool> snapped(nv, false);
     // an interface keeps every vertex: its segments are the mesh's edges (constraints)
-    const bool on_interface = m_zone.loops.loops[l].twin != none;
+    const Boundary_loop_2<K>& loop = m_zone.loops.loops[l];
     for(std::size_t r = 0; r < n; ++r)
       if(share[r] == none && snap[rot(r)] != none) snapped[snap[rot(r)]] = true;
     for(std::size_t k = 0; k < nv; ++k) {
       double s = std::fmod(m_zone.locator->arc(l, k) - O, L);
       if(s < 0) s += L;
-      nodes.push_back(Node{ O + s, k, none, loop_xy[k], snapped[k] || on_interface || m_zone.is_feature(l, k) });
+      nodes.push_back(Node{ O + s, k, none, loop_xy[k], snapped[k] || on_edge_twin(loop, k) || m_zone.is_feature(l, k) });
     }
     for(std::size_t r = 0; r < n; ++r)
       if(share[r] == none && snap[rot(r)] == none && P[r] < O + L * (1 - 1e-12))
@@ -489,8 +561,9 @@ private:
     double longest = -1;
     for(std::size_t j = 0; j < k; ++j) {
       const double len = length_2d(m_zone.xy[gid[(g0 + j + 1) % M0]] - (m_zone.xy[gid[g0 + j]]));
-      if(len > longest) { longest = len; e = j; }
+      if(len > longest && !(m_extra_off_settled_edges && on_settled_edge(strip, g0 + j))) { longest = len; e = j; }
     }
+    if(longest < 0) return; // every edge of the gap is settled
     const double a = gparam[g0 + e], b = g0 + e + 1 < M0 ? gparam[g0 + e + 1] : gparam[0] + L;
     const double mid = 0.5 * (a + b);
     const Loop_locator::Hit h = m_zone.locator->point_at_arclength(l, mid);
@@ -793,6 +866,18 @@ private:
     }
   }
 
+  // whether chain edge j (from node j to j + 1) lies on an edge whose nodes are settled: it
+  // takes its twin's, or its reverse on this loop takes its own (a node added to either side
+  // would be on one side only). A loop built later takes what the others have.
+  bool on_settled_edge(const Strip_nodes& strip, std::size_t j) const
+  {
+    const std::size_t M = strip.gid.size();
+    const double a = strip.gparam[j], b = j + 1 < M ? strip.gparam[j + 1] : strip.gparam[0] + L;
+    const std::size_t k = m_zone.locator->point_at_arclength(l, 0.5 * (a + b)).edge;
+    const std::size_t twin = m_zone.loops.loops[l].edge_twins[k][0];
+    return twin != none && twin <= l;
+  }
+
   // the F point at position r from the strip's start
   std::size_t rot(std::size_t r) const { return m_projection.rot(r); }
   double cyclic(double d) const { return m_projection.cyclic(d); }
@@ -823,6 +908,7 @@ private:
   const std::size_t c, l, n, nv;
   const double L;
   const std::vector<Point_2d>& loop_xy;
+  bool m_extra_off_settled_edges = false; // while plan_on_chain() pairs a face's chain
 };
 
 /// Stage "buffer2" (paper §4.6) on one buffer zone: the strip of each cycle (Buffer_strip).
@@ -832,18 +918,37 @@ class Second_buffer_layer
 public:
   explicit Second_buffer_layer(Buffer_zone<K>& zone) : m_zone(zone) {}
 
-  // the cycles on an interface's second twin last: they take the chain of the first's
+  // Each cycle after those of the loops listed before it that share an edge with it (an
+  // interface's second twin, a face at a junction): it takes their nodes on those edges.
   void build_second_layer()
   {
     m_zone.layer_begin[1] = m_zone.mesh.quads.size();
     m_zone.loop_chain.assign(m_zone.loops.loops.size(), {});
-    for(bool second_twins : { false, true })
-      for(std::size_t c = 0; c < m_zone.cycles.size(); ++c)
-        if((m_zone.loops.loops[m_zone.cycle_loop[c]].twin < m_zone.cycle_loop[c]) == second_twins)
-          Buffer_strip<K>(m_zone, c).build();
+    const std::size_t nc = m_zone.cycles.size();
+    std::vector<char> built_loop(m_zone.loops.loops.size(), 0), built_cycle(nc, 0);
+    for(std::size_t done = 0; done < nc;) {
+      std::vector<std::size_t> ready;
+      for(std::size_t c = 0; c < nc; ++c)
+        if(!built_cycle[c] && takes_from_built_loops(m_zone.cycle_loop[c], built_loop)) ready.push_back(c);
+      CGAL_assertion(!ready.empty()); // a loop waits only for loops listed before it
+      for(std::size_t c : ready) {
+        Buffer_strip<K>(m_zone, c).build();
+        built_cycle[c] = 1;
+        ++done;
+      }
+      for(std::size_t c : ready) built_loop[m_zone.cycle_loop[c]] = 1;
+    }
   }
 
 private:
+  // whether every loop listed before loop l that shares an edge with it is built
+  bool takes_from_built_loops(std::size_t l, const std::vector<char>& built_loop) const
+  {
+    for(const auto& twin : m_zone.loops.loops[l].edge_twins)
+      if(twin[0] != std::size_t(-1) && twin[0] < l && !built_loop[twin[0]]) return false;
+    return true;
+  }
+
   Buffer_zone<K>& m_zone;
 };
 
