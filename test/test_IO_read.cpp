@@ -711,6 +711,77 @@ TEST(IO_read, WktPointCloud)
   EXPECT_TRUE(d.holes.empty());
 }
 
+// A LINESTRING in a collection with a polygon is a crack: an open polyline of segments after
+// the rings', in its order, named by linestring and line.
+TEST(IO_read, WktLinestringInAPolygonIsACrack)
+{
+  using namespace qm2_test_io_read;
+  std::istringstream in("GEOMETRYCOLLECTION (POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0)),\n"
+                        "LINESTRING (1 1, 2 2,\n3 1), LINESTRING EMPTY)");
+  Domain d;
+  std::string err;
+  ASSERT_TRUE(QIO::read_WKT(in, d, &err)) << err;
+  ASSERT_EQ(d.points.size(), 7u);
+  ASSERT_EQ(d.segments.size(), 6u);
+  EXPECT_EQ(d.points[5], Point_2(2, 2));
+  EXPECT_EQ(d.segments[4], (Domain::Segment{4, 5}));
+  EXPECT_EQ(d.segments[5], (Domain::Segment{5, 6}));
+  EXPECT_EQ(d.point_label(6), "3 of linestring 1 (line 3)");
+  EXPECT_EQ(d.segment_label(5), "2 of linestring 1 (line 2)");
+  EXPECT_TRUE(d.holes.empty());
+  const auto loops = CGAL::Quad_mesher_2::extract_loops(d);
+  ASSERT_EQ(loops.loops.size(), 2u);
+  const std::size_t l = loops.loops[0].twin == 0 ? 0 : 1;
+  EXPECT_EQ(loops.loops[l].twin, l);
+  EXPECT_EQ(loops.loops[l].vertices, (std::vector<std::size_t>{4, 5, 6, 5}));
+  EXPECT_EQ(loops.loops[1 - l].twin, std::size_t(-1));
+}
+
+// Two linestrings of a MULTILINESTRING that meet end to end share the vertex there: one crack.
+TEST(IO_read, WktMultilinestringOfTwoMeetingAtAVertex)
+{
+  using namespace qm2_test_io_read;
+  std::istringstream in("GEOMETRYCOLLECTION (POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0)),\n"
+                        "MULTILINESTRING ((1 1, 2 2), EMPTY,\n(3 1, 2 2)))");
+  Domain d;
+  std::string err;
+  ASSERT_TRUE(QIO::read_WKT(in, d, &err)) << err;
+  ASSERT_EQ(d.points.size(), 7u);
+  ASSERT_EQ(d.segments.size(), 6u);
+  EXPECT_EQ(d.segments[4], (Domain::Segment{4, 5}));
+  EXPECT_EQ(d.segments[5], (Domain::Segment{6, 5}));
+  EXPECT_EQ(d.segment_label(5), "1 of linestring 2 (line 3)");
+  const auto loops = CGAL::Quad_mesher_2::extract_loops(d);
+  ASSERT_EQ(loops.loops.size(), 2u);
+  const std::size_t l = loops.loops[0].twin == 0 ? 0 : 1;
+  EXPECT_EQ(loops.loops[l].twin, l);
+  EXPECT_EQ(loops.loops[l].vertices, (std::vector<std::size_t>{4, 5, 6, 5}));
+  EXPECT_EQ(loops.loops[1 - l].twin, std::size_t(-1));
+}
+
+// A linestring ending on a polygon's vertex takes that vertex's index; extract_loops() then
+// refuses the crack touching the boundary, naming the vertex as the file does.
+TEST(IO_read, WktLinestringEndingOnAPolygonVertexSharesIt)
+{
+  using namespace qm2_test_io_read;
+  std::istringstream in("GEOMETRYCOLLECTION (POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0)),\nLINESTRING (2 2, 4 4))");
+  Domain d;
+  std::string err;
+  ASSERT_TRUE(QIO::read_WKT(in, d, &err)) << err;
+  ASSERT_EQ(d.points.size(), 5u);
+  ASSERT_EQ(d.segments.size(), 5u);
+  EXPECT_EQ(d.segments[4], (Domain::Segment{4, 2}));
+  std::string msg;
+  try {
+    CGAL::Quad_mesher_2::extract_loops(d);
+  } catch(const CGAL::Quad_mesher_2::Meshing_error& e) {
+    msg = e.what();
+  }
+  EXPECT_NE(msg.find("vertex 3 of the outer ring of polygon 1 (line 1) (4, 4) is shared by 3 segments"), std::string::npos)
+      << msg;
+  EXPECT_NE(msg.find("1 of linestring 1 (line 2)"), std::string::npos) << msg;
+}
+
 // The boundary checks run after reading; their messages name vertices and segments as the
 // file does (a 1-based .poly: "segment 3 (line 8)", not the 0-based index 2), and WKT ones
 // by ring and line.
@@ -766,7 +837,7 @@ TEST(IO_read, WktMalformedCases)
   const Bad_case cases[] = {
     {"w_empty", "", 1, "empty file"},
     {"w_blank", "\n\n", 3, "no WKT geometry"},
-    {"w_unsupported", "\nLINESTRING (0 0, 1 1)", 2, "unsupported WKT geometry type"},
+    {"w_unsupported", "\nCIRCULARSTRING (0 0, 1 1, 2 0)", 2, "unsupported WKT geometry type"},
     {"w_z", "POLYGON Z ((0 0 0, 1 0 0, 0 1 0, 0 0 0))", 1, "only 2D"},
     {"w_third_coordinate", "POLYGON ((0 0, 1 0 5, 0 1, 0 0))", 1, "only 2D"},
     {"w_non_numeric", "POLYGON ((0 0,\n1 zero, 0 1, 0 0))", 2, "expected a number for the y coordinate"},
@@ -791,6 +862,31 @@ TEST(IO_read, WktMalformedCases)
     {"w_collection_member", "GEOMETRYCOLLECTION (POINT (0 0), (1 1))", 1, "expected a WKT geometry keyword in GEOMETRYCOLLECTION"},
     {"w_shared_edge", "MULTIPOLYGON (((0 0, 1 0, 1 1, 0 1, 0 0)),\n((1 0, 2 0, 2 1, 1 1, 1 0)))", 2, "duplicate segment"},
     {"w_garbage_after", "POINT (1 1) )", 1, "expected a WKT geometry keyword"},
+    // linestrings: cracks in a polygon
+    {"w_lone_linestring", "\nLINESTRING (0 0, 1 1)", 2,
+     "linestring 1 but no polygon: a linestring is a crack in a domain, and a domain needs a POLYGON"},
+    {"w_linestring_with_points", "GEOMETRYCOLLECTION (POINT (5 5), POLYGON EMPTY,\nMULTILINESTRING (EMPTY, (0 0, 1 1)))", 2,
+     "linestring 1 but no polygon"},
+    {"w_only_empty_linestrings", "GEOMETRYCOLLECTION (LINESTRING EMPTY, MULTILINESTRING EMPTY)", 1, "all WKT geometries are EMPTY"},
+    {"w_linestring_z", "LINESTRING Z (0 0 0, 1 1 1)", 1, "LINESTRING Z: only 2D"},
+    {"w_multilinestring_m", "MULTILINESTRING M ((0 0 0, 1 1 1))", 1, "MULTILINESTRING M: only 2D"},
+    {"w_linestring_third_coordinate", "GEOMETRYCOLLECTION (POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0)),\nLINESTRING (1 1 5, 2 2))", 2,
+     "a third coordinate \"5\": only 2D"},
+    {"w_linestring_one_vertex", "GEOMETRYCOLLECTION (POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0)),\nLINESTRING (1 1))", 2,
+     "linestring 1 has 1 distinct vertex, (1, 1); a linestring needs at least 2"},
+    {"w_linestring_one_distinct_vertex", "GEOMETRYCOLLECTION (POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0)),\n"
+     "MULTILINESTRING ((1 1, 2 2),\n(3 3,\n3 3)))", 3, "linestring 2 has 1 distinct vertex, (3, 3)"},
+    {"w_linestring_zero_length", "GEOMETRYCOLLECTION (POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0)),\nLINESTRING (1 1, 2 2,\n2 2, 3 1))", 3,
+     "linestring 1 has a zero-length segment: vertex (2, 2) is repeated (lines 2 and 3)"},
+    {"w_linestring_closed", "GEOMETRYCOLLECTION (POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0)),\nLINESTRING (1 1, 2 1, 2 2,\n1 1))", 3,
+     "linestring 1 is closed: it ends at its first point (1, 1) (lines 2 and 3); a closed polyline is a polygon ring"},
+    {"w_point_on_linestring", "GEOMETRYCOLLECTION (POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0)),\nLINESTRING (1 1, 2 2),\nPOINT (2 2))", 3,
+     "duplicate point: (2, 2) (line 3) is already a linestring vertex (line 2)"},
+    {"w_linestring_on_an_edge", "GEOMETRYCOLLECTION (POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0)),\nLINESTRING (4 0, 4 4))", 2,
+     "duplicate segment: segment 1 of linestring 1 (line 2) from (4, 0) to (4, 4) is also segment 2 of the outer ring of "
+     "polygon 1 (line 1)"},
+    {"w_linestring_unclosed_paren", "GEOMETRYCOLLECTION (POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0)),\nLINESTRING (1 1, 2 2)", 2,
+     "expected ')' or ',' in GEOMETRYCOLLECTION"},
   };
   for(const Bad_case& c : cases) {
     SCOPED_TRACE(c.name);

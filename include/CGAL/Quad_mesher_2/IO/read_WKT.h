@@ -99,11 +99,20 @@ private:
   std::size_t m_line = 1;
 };
 
-struct Wkt_ring
+/// The keywords the reader accepts, as messages list them.
+constexpr const char* wkt_keywords =
+    "POLYGON, MULTIPOLYGON, LINESTRING, MULTILINESTRING, POINT, MULTIPOINT or GEOMETRYCOLLECTION";
+
+/// A parenthesised list of coordinates: a ring or a linestring.
+struct Wkt_path
 {
   std::vector<std::array<double, 2> > xy;
   std::vector<std::size_t> lines;
   std::size_t line = 0;       // line of the opening parenthesis
+};
+
+struct Wkt_ring : Wkt_path
+{
   std::size_t polygon = 0;    // 1-based polygon number in the file
   std::size_t index = 0;      // 1-based ring number in its polygon (1 = outer ring)
   std::string describe() const
@@ -113,9 +122,17 @@ struct Wkt_ring
   }
 };
 
+/// A LINESTRING: an open polyline, a crack in the domain.
+struct Wkt_linestring : Wkt_path
+{
+  std::size_t number = 0;     // 1-based linestring number in the file
+  std::string describe() const { return "linestring " + std::to_string(number); }
+};
+
 struct Wkt_data
 {
   std::vector<Wkt_ring> rings;
+  std::vector<Wkt_linestring> linestrings;
   std::vector<std::array<double, 2> > points;   // POINT / MULTIPOINT
   std::vector<std::size_t> point_lines;
 };
@@ -135,7 +152,7 @@ public:
       if(m_lex.accept(';')) continue;
       const std::size_t line = m_lex.line();
       const std::string kw = m_lex.word();
-      if(kw.empty()) return fail("expected a WKT geometry keyword (POLYGON, MULTIPOLYGON, POINT, MULTIPOINT, GEOMETRYCOLLECTION), found " + m_lex.found());
+      if(kw.empty()) return fail(std::string("expected a WKT geometry keyword (") + wkt_keywords + "), found " + m_lex.found());
       if(kw == "SRID") {  // EWKT prefix `SRID=4326;`
         if(!m_lex.accept('=')) return fail("expected '=' after SRID, found " + m_lex.found());
         m_lex.token();
@@ -149,6 +166,10 @@ public:
       found = true;
     }
     if(!found) return fail("no WKT geometry found (empty file)");
+    if(m_data.rings.empty() && !m_data.linestrings.empty())
+      return fail_at(m_data.linestrings.front().line,
+                     m_data.linestrings.front().describe() + " but no polygon: a linestring is a crack in a domain, "
+                     "and a domain needs a POLYGON or MULTIPOLYGON (with the linestrings in one GEOMETRYCOLLECTION)");
     if(m_data.rings.empty() && m_data.points.empty()) return fail("all WKT geometries are EMPTY: no points");
     return true;
   }
@@ -157,7 +178,7 @@ private:
   bool fail(const std::string& problem) { m_msg = m_lex.where() + problem; return false; }
   bool fail_at(std::size_t line, const std::string& problem) { m_msg = m_lex.where(line) + problem; return false; }
 
-  bool expect(char c, const char* context)
+  bool expect(char c, const std::string& context)
   {
     if(m_lex.accept(c)) return true;
     return fail(std::string("expected '") + c + "' " + context + ", found " + m_lex.found());
@@ -198,15 +219,15 @@ private:
   }
 
   /// The geometry whose keyword `kw` was read on `line`. A collection may not nest: its
-  /// members are the four other types.
+  /// members are the six other types.
   bool geometry(const std::string& kw, std::size_t line, bool top_level)
   {
     const bool collection = kw == "GEOMETRYCOLLECTION";
     if(collection && !top_level)
       return fail_at(line, "a GEOMETRYCOLLECTION inside a GEOMETRYCOLLECTION is not supported");
-    if(!collection && kw != "POLYGON" && kw != "MULTIPOLYGON" && kw != "POINT" && kw != "MULTIPOINT")
-      return fail_at(line, "unsupported WKT geometry type " + quote(kw) +
-                           " (expected POLYGON, MULTIPOLYGON, POINT, MULTIPOINT or GEOMETRYCOLLECTION)");
+    if(!collection && kw != "POLYGON" && kw != "MULTIPOLYGON" && kw != "LINESTRING" && kw != "MULTILINESTRING" &&
+       kw != "POINT" && kw != "MULTIPOINT")
+      return fail_at(line, "unsupported WKT geometry type " + quote(kw) + " (expected " + wkt_keywords + ")");
     if(std::isalpha(static_cast<unsigned char>(m_lex.peek()))) {
       const std::size_t l2 = m_lex.line();
       const std::string tag = m_lex.word();
@@ -219,6 +240,8 @@ private:
     if(kw == "POINT") return point_body();
     if(kw == "MULTIPOINT") return multipoint_body();
     if(kw == "POLYGON") return polygon_body();
+    if(kw == "LINESTRING") return linestring_body();
+    if(kw == "MULTILINESTRING") return multilinestring_body();
     return multipolygon_body();
   }
 
@@ -262,10 +285,11 @@ private:
     return expect(')', "or ',' in MULTIPOINT");
   }
 
-  bool ring(Wkt_ring& r)
+  /// `( x y, ... )`, a ring or a linestring as `what` says
+  bool path(Wkt_path& r, const std::string& what)
   {
     r.line = m_lex.line();
-    if(!expect('(', "to open a ring")) return false;
+    if(!expect('(', "to open " + what)) return false;
     do {
       std::array<double, 2> p = {0, 0};
       std::size_t line = 0;
@@ -273,7 +297,7 @@ private:
       r.xy.push_back(p);
       r.lines.push_back(line);
     } while(m_lex.accept(','));
-    return expect(')', "or ',' in a ring");
+    return expect(')', "or ',' in " + what);
   }
 
   bool polygon_body()
@@ -287,7 +311,7 @@ private:
       Wkt_ring r;
       r.polygon = m_polygons;
       r.index = ++index;
-      if(!ring(r)) return false;
+      if(!path(r, "a ring")) return false;
       m_data.rings.push_back(std::move(r));
     } while(m_lex.accept(','));
     return expect(')', "or ',' after a ring");
@@ -302,10 +326,30 @@ private:
     return expect(')', "or ',' after a polygon of MULTIPOLYGON");
   }
 
+  bool linestring_body()
+  {
+    if(is_empty_keyword()) return true;
+    Wkt_linestring s;
+    s.number = ++m_linestrings;
+    if(!path(s, "a linestring")) return false;
+    m_data.linestrings.push_back(std::move(s));
+    return true;
+  }
+
+  bool multilinestring_body()
+  {
+    if(!expect('(', "after MULTILINESTRING")) return false;
+    do {
+      if(!linestring_body()) return false;
+    } while(m_lex.accept(','));
+    return expect(')', "or ',' after a linestring of MULTILINESTRING");
+  }
+
   Wkt_lexer& m_lex;
   Wkt_data& m_data;
   std::string& m_msg;
   std::size_t m_polygons = 0;
+  std::size_t m_linestrings = 0;
 };
 
 struct Xy_hash
@@ -477,8 +521,37 @@ bool check_wkt_rings(Wkt_data& data, const std::string& source, std::vector<std:
   return true;
 }
 
-// The domain's vertices and segments, numbered from the rings and points of a WKT input, and
-// how later messages name them: vertex or edge i of its ring, from 1.
+// Per-linestring checks: at least 2 distinct vertices, no zero-length segment, open (a closed
+// one is a ring). Whether it lies in the domain is left to extract_loops(), which names the
+// segment.
+inline bool check_wkt_linestrings(const Wkt_data& data, const std::string& source, std::string& msg)
+{
+  auto at = [](const std::array<double, 2>& p) { return format_point(p[0], p[1]); };
+  for(const Wkt_linestring& s : data.linestrings) {
+    const std::vector<std::array<double, 2> >& xy = s.xy;
+    if(std::all_of(xy.begin(), xy.end(), [&](const std::array<double, 2>& p) { return p == xy.front(); })) {
+      msg = wkt_where(source, s.line) + s.describe() + " has 1 distinct vertex, " + at(xy.front()) +
+            "; a linestring needs at least 2";
+      return false;
+    }
+    for(std::size_t i = 1; i < xy.size(); ++i) {
+      if(xy[i] != xy[i - 1]) continue;
+      msg = wkt_where(source, s.lines[i]) + s.describe() + " has a zero-length segment: vertex " + at(xy[i]) +
+            " is repeated (lines " + std::to_string(s.lines[i - 1]) + " and " + std::to_string(s.lines[i]) + ")";
+      return false;
+    }
+    if(xy.front() == xy.back()) {
+      msg = wkt_where(source, s.lines.back()) + s.describe() + " is closed: it ends at its first point " +
+            at(xy.front()) + " (lines " + std::to_string(s.lines.front()) + " and " + std::to_string(s.lines.back()) +
+            "); a closed polyline is a polygon ring: give it as a POLYGON, or as an inner ring for a hole";
+      return false;
+    }
+  }
+  return true;
+}
+
+// The domain's vertices and segments, numbered from the rings, linestrings and points of a WKT
+// input, and how later messages name them: vertex or segment i of its ring or linestring, from 1.
 struct Wkt_numbering
 {
   std::vector<std::array<double, 2> > xy;
@@ -488,53 +561,68 @@ struct Wkt_numbering
   std::vector<std::string> point_labels, segment_labels;
 };
 
-// Numbers the vertices: rings may touch at a vertex (they then share it); isolated points must
-// be new, and no two rings may share an edge.
+typedef std::unordered_map<std::array<double, 2>, std::size_t, Xy_hash> Wkt_index;
+
+// how messages name vertex or segment `i` (0-based) of `path`, read on `line`
+inline std::string wkt_label(std::size_t i, const std::string& path, std::size_t line)
+{
+  return std::to_string(i + 1) + " of " + path + " (line " + std::to_string(line) + ")";
+}
+
+// Numbers the vertices of a ring (`closed`) or a linestring and adds its segments in order; a
+// vertex at the place of one already numbered (of a ring or a linestring) takes its index.
+inline void number_wkt_path(const Wkt_path& path, const std::string& name, bool closed, Wkt_index& index,
+                            Wkt_numbering& n)
+{
+  std::vector<std::size_t> ids(path.xy.size());
+  for(std::size_t i = 0; i < path.xy.size(); ++i) {
+    auto ins = index.emplace(path.xy[i], n.xy.size());
+    if(ins.second) {
+      n.xy.push_back(path.xy[i]);
+      n.lines.push_back(path.lines[i]);
+      n.point_labels.push_back(wkt_label(i, name, path.lines[i]));
+    }
+    ids[i] = ins.first->second;
+  }
+  const std::size_t segments = closed ? ids.size() : ids.size() - 1;
+  for(std::size_t i = 0; i < segments; ++i) {
+    n.segs.push_back({ids[i], ids[(i + 1) % ids.size()]});
+    n.seg_lines.push_back(path.lines[i]);
+    n.segment_labels.push_back(wkt_label(i, name, path.lines[i]));
+  }
+}
+
+// Numbers the vertices, rings first, then linestrings, then points: rings and linestrings may
+// meet at a vertex (they then share it); isolated points must be new, and no two segments may
+// join the same vertices.
 inline bool number_wkt_vertices(const Wkt_data& data, const std::string& source, Wkt_numbering& n, std::string& msg)
 {
   auto where = [&](std::size_t line) { return wkt_where(source, line); };
-  std::unordered_map<std::array<double, 2>, std::size_t, Xy_hash> index;
-  auto label = [](std::size_t i, const std::string& of, std::size_t line) {
-    return std::to_string(i + 1) + " of " + of + " (line " + std::to_string(line) + ")";
-  };
-  for(const Wkt_ring& r : data.rings) {
-    std::vector<std::size_t> ids(r.xy.size());
-    const std::string ring = r.describe();
-    for(std::size_t i = 0; i < r.xy.size(); ++i) {
-      auto ins = index.emplace(r.xy[i], n.xy.size());
-      if(ins.second) {
-        n.xy.push_back(r.xy[i]);
-        n.lines.push_back(r.lines[i]);
-        n.point_labels.push_back(label(i, ring, r.lines[i]));
-      }
-      ids[i] = ins.first->second;
-    }
-    for(std::size_t i = 0; i < ids.size(); ++i) {
-      n.segs.push_back({ids[i], ids[(i + 1) % ids.size()]});
-      n.seg_lines.push_back(r.lines[i]);
-      n.segment_labels.push_back(label(i, ring, r.lines[i]));
-    }
-  }
+  Wkt_index index;
+  for(const Wkt_ring& r : data.rings) number_wkt_path(r, r.describe(), true, index, n);
   const std::size_t ring_vertices = n.xy.size();
+  for(const Wkt_linestring& s : data.linestrings) number_wkt_path(s, s.describe(), false, index, n);
+  const std::size_t path_vertices = n.xy.size();
   for(std::size_t i = 0; i < data.points.size(); ++i) {
     auto ins = index.emplace(data.points[i], n.xy.size());
     if(!ins.second) {
       const std::size_t j = ins.first->second;
       msg = where(data.point_lines[i]) + "duplicate point: " + format_point(data.points[i][0], data.points[i][1]) +
             " (line " + std::to_string(data.point_lines[i]) + ") is already " +
-            (j < ring_vertices ? "a ring vertex" : "a point") + " (line " + std::to_string(n.lines[j]) + ")";
+            (j < ring_vertices ? "a ring vertex" : j < path_vertices ? "a linestring vertex" : "a point") +
+            " (line " + std::to_string(n.lines[j]) + ")";
       return false;
     }
     n.xy.push_back(data.points[i]);
     n.lines.push_back(data.point_lines[i]);
-    n.point_labels.push_back(label(i, "the points", data.point_lines[i]));
+    n.point_labels.push_back(wkt_label(i, "the points", data.point_lines[i]));
   }
   std::size_t d1 = 0, d2 = 0;
   if(find_duplicate_segment(n.segs, d1, d2)) {
     const auto& s = n.segs[d2];
-    msg = where(n.seg_lines[d2]) + "duplicate segment: the edge from " + format_point(n.xy[s[0]][0], n.xy[s[0]][1]) + " to " +
-          format_point(n.xy[s[1]][0], n.xy[s[1]][1]) + " (line " + std::to_string(n.seg_lines[d2]) +
-          ") is also an edge of another ring (line " + std::to_string(n.seg_lines[d1]) + ")";
+    msg = where(n.seg_lines[d2]) + "duplicate segment: segment " + n.segment_labels[d2] + " from " +
+          format_point(n.xy[s[0]][0], n.xy[s[0]][1]) + " to " + format_point(n.xy[s[1]][0], n.xy[s[1]][1]) +
+          " is also segment " + n.segment_labels[d1];
     return false;
   }
   return true;
@@ -623,7 +711,8 @@ bool wkt_to_domain(Wkt_data& data, const std::string& source, Domain_2<K>& out, 
   const K k;
   std::vector<std::vector<Point_2> > ring_points;
   Wkt_numbering numbering;
-  if(!check_wkt_rings(data, source, ring_points, k, msg) || !number_wkt_vertices(data, source, numbering, msg))
+  if(!check_wkt_rings(data, source, ring_points, k, msg) || !check_wkt_linestrings(data, source, msg) ||
+     !number_wkt_vertices(data, source, numbering, msg))
     return false;
   const std::vector<Bbox_2> boxes = ring_boxes(ring_points);
   std::vector<Point_2> holes;
@@ -655,9 +744,10 @@ bool read_WKT_impl(std::string&& text, const std::string& source, Domain_2<K>& o
 
 /// \ingroup PkgQuadMesher2IO
 /// Reads one WKT geometry into `out` (replacing its content): a `POLYGON`, `MULTIPOLYGON`,
-/// `POINT`, `MULTIPOINT`, or a `GEOMETRYCOLLECTION` of these (keywords case-insensitive,
-/// `EMPTY` allowed, an EWKT `SRID=...;` prefix skipped). A second geometry after the first is
-/// an error naming its line: several polygons go in one `MULTIPOLYGON`. Only 2D coordinates are accepted (`Z`/`M` are errors).
+/// `POINT`, `MULTIPOINT`, or a `GEOMETRYCOLLECTION` of these and of `LINESTRING`s and
+/// `MULTILINESTRING`s (keywords case-insensitive, `EMPTY` allowed, an EWKT `SRID=...;` prefix
+/// skipped). A second geometry after the first is an error naming its line: several polygons go
+/// in one `MULTIPOLYGON`. Only 2D coordinates are accepted (`Z`/`M` are errors).
 ///
 /// Each ring becomes a closed chain of segments; it must end at its first point, as WKT
 /// asks (an open ring is an error, not closed silently). Each ring must have at least 3 distinct vertices, no repeated vertex and be
@@ -669,6 +759,15 @@ bool read_WKT_impl(std::string&& text, const std::string& source, Domain_2<K>& o
 /// another polygon's area (not in one of its holes) is an error, as OGC forbids overlapping
 /// polygons. Crossings between different rings are not detected here (the mesher's domain
 /// checks name them).
+///
+/// Each linestring becomes an open polyline of segments in its order, a crack in the domain
+/// (see `extract_loops()`): it needs a polygon in the same collection, at least 2 distinct
+/// vertices, no two equal consecutive ones, and a last point other than its first (a closed
+/// one is a polygon ring). A vertex at the place of a ring's or another linestring's vertex is
+/// that vertex; a segment joining the same two vertices as another, or a POINT there, is an
+/// error. Whether it lies in the domain and meets no ring is left to `extract_loops()`, whose
+/// messages name its vertices and segments as `2 of linestring 1 (line 3)`, and rings' as
+/// `2 of the outer ring of polygon 1 (line 3)`.
 ///
 /// Errors: one message `SOURCE:LINE: problem` in `*error`, `out` left empty. Never throws.
 template <class K>
