@@ -513,6 +513,26 @@ TEST(quad_mesher_cli, duplicate_points_are_named_or_merged_on_request)
   EXPECT_EQ(report["points_as_vertices"].get<int>(), 3);
 }
 
+// A WKT LINESTRING in a polygon is a crack: the mesh is the one of the same .poly, whose
+// dangling segments the mesher keeps as mesh edges.
+TEST(quad_mesher_cli, a_wkt_linestring_is_meshed_as_the_crack_of_the_same_poly)
+{
+  auto wkt = scratch("crack.wkt"), poly = scratch("crack.poly"), from_wkt = scratch("crack_wkt.off"),
+       from_poly = scratch("crack_poly.off"), json = scratch("crack.json");
+  std::ofstream(wkt) << "GEOMETRYCOLLECTION (POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0)),\nLINESTRING (1 1.5, 2 2, 3 2.2))\n";
+  std::ofstream(poly) << "7 2 0 0\n1 0 0\n2 4 0\n3 4 4\n4 0 4\n5 1 1.5\n6 2 2\n7 3 2.2\n"
+                         "6 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 5 6\n6 6 7\n0\n";
+  Cli_run r = run(wkt.string() + " --kernel " + kernel_name + " -o " + from_wkt.string() + " --report " + json.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto report = nlohmann::json::parse(slurp(json));
+  EXPECT_EQ(report["input"]["points"].get<int>(), 7);
+  EXPECT_EQ(report["input"]["segments"].get<int>(), 6);
+  EXPECT_TRUE(report["validity"]["valid"].get<bool>());
+  r = run(poly.string() + " --kernel " + kernel_name + " -o " + from_poly.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(slurp(from_wkt), slurp(from_poly));
+}
+
 TEST(quad_mesher_cli, boundary_layers_on_an_air_foil)
 {
   const std::string naca = std::string(QM2_DATA_DIR) + "/naca0012/naca0012_sharp.poly";
