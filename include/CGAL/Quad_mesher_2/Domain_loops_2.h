@@ -539,7 +539,7 @@ private:
       const auto& s = m_d.segments[e[1]];
       if(on_closed_segment(m_d.points[s[0]], m_d.points[s[1]], m_d.points[e[0]]))
         throw Meshing_error(both + " touch: " + vtx(e[0]) + " lies on segment " + m_d.segment_label(e[1]) +
-                            " (loops may not touch, and a vertex may not lie inside a segment)");
+                            " (a vertex may not lie inside a segment: to join them there, split the segment at it)");
     }
     throw Meshing_error(both + " cross");
   }
