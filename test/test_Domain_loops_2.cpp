@@ -419,6 +419,26 @@ TEST(Domain_loops_2, with_hole_points_an_unmarked_inner_loop_is_an_interface_lis
   EXPECT_EQ(CGAL::Quad_mesher_2::region_area(d, loops, 1), 4);
 }
 
+// every_hole_marked: no hole point means no hole, so the inner square is an interface, not
+// the hole depth parity would make it
+TEST(Domain_loops_2, with_every_hole_marked_and_no_hole_point_an_inner_loop_is_an_interface)
+{
+  Domain d;
+  add_square(d, 0, 0, 10, 10);
+  add_square(d, 1, 1, 3, 3);
+  d.every_hole_marked = true;
+  const Loops loops = extract_loops(d);
+  ASSERT_EQ(loops.loops.size(), 3u);
+  EXPECT_TRUE(loops.loops[1].is_outer);
+  EXPECT_EQ(loops.loops[1].region, 1u);
+  EXPECT_EQ(loops.loops[1].twin, 2u);
+  EXPECT_FALSE(loops.loops[2].is_outer);
+  EXPECT_EQ(loops.loops[2].region, 0u);
+  expect_domain_on_left(d, loops);
+  EXPECT_EQ(CGAL::Quad_mesher_2::domain_area(d, loops), 100);
+  EXPECT_EQ(CGAL::Quad_mesher_2::region_area(d, loops, 1), 4);
+}
+
 TEST(Domain_loops_2, IslandInHole)
 {
   for(int with_hole_point = 0; with_hole_point < 2; ++with_hole_point) {

@@ -671,6 +671,7 @@ Domain_2<K> decompose_domain_curves(const Domain_2<K>& domain, const Curve_decom
   Domain_2<K> out;
   out.points = domain.points;
   out.holes = domain.holes;
+  out.every_hole_marked = domain.every_hole_marked;
   out.hole_labels = domain.hole_labels;
   out.region_attributes = domain.region_attributes;
   out.region_attribute_labels = domain.region_attribute_labels;

@@ -26,7 +26,12 @@ namespace Quad_mesher_2 {
 /// - `holes`: a hole is marked by a seed point strictly inside it (not on a segment), which
 ///   makes the region it lies in outside the domain; with seed points, every hole needs one.
 ///   With none at all, nesting decides: inside an outermost loop is domain, inside a loop
-///   nested in it a hole, inside the next domain again, and so on.
+///   nested in it a hole, inside the next domain again, and so on; unless
+///   `every_hole_marked` says that there is no hole.
+/// - `every_hole_marked`: `true` if `holes` marks every hole even when it is empty, so that
+///   every bounded region without a hole point is in the domain whatever its nesting, as in
+///   any domain with hole points. The WKT reader sets it: its holes are inner rings, each
+///   with a seed unless other polygons fill it.
 /// - <em>Isolated points</em> are the points on no segment; each must lie strictly inside the
 ///   domain, and the points stage (`Mesh_criteria_2::points_as_vertices()`, the default) makes
 ///   each one a mesh vertex.
@@ -59,6 +64,7 @@ struct Domain_2
   std::vector<Point_2> points;
   std::vector<Segment> segments;
   std::vector<Point_2> holes;
+  bool every_hole_marked = false;
   std::vector<int> segment_markers; // empty, or one per segment
   std::vector<Region_attribute> region_attributes;
   /// Optional, for error messages: how the user knows point `i`, segment `s`, hole `h`, regional

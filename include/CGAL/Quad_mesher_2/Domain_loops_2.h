@@ -661,7 +661,7 @@ private:
   {
     const std::size_t nl = m_loops.size();
     m_in_domain.assign(nl + 1, false);  // index nl: the unbounded region, never in the domain
-    const bool parity = m_d.holes.empty();
+    const bool parity = m_d.holes.empty() && !m_d.every_hole_marked;
     for(std::size_t l = 0; l < nl; ++l)
       m_in_domain[l] = parity ? (m_depth[l] % 2 == 0) : m_hole_in[l] == none;
     m_is_outer.resize(nl);
@@ -679,7 +679,7 @@ private:
       if(m_crack[l] && !outside)
         throw Meshing_error(loop_str(l) + " lies " + where_region(m_parent[l]) +
                             ": a polyline with free ends is a crack, which must lie in the domain");
-      m_interface[l] = inside && outside; // only with hole points: depth parity alternates
+      m_interface[l] = inside && outside; // never by depth parity, which alternates
       if(!inside && !outside) {
         // Hole points on both sides (outside a top loop is the unbounded region): one of them
         // is in no hole. Name the one on the side of even depth, where nesting puts the domain
@@ -822,12 +822,12 @@ FT loops_balanced_sum(std::vector<FT> v)
 /// both sides of a segment share it as twin edges (`Boundary_loop_2::edge_twins`). The loops
 /// cut the plane into regions: the unbounded one, and for each loop (each face) the part
 /// inside it but outside the loops directly nested in it.
-/// - With hole points, a region is in the domain iff it is bounded and contains no hole point
-///   (Triangle's rule). A loop with the domain on both sides is an interface between two
+/// - With hole points (or `Domain_2::every_hole_marked`), a region is in the domain iff it is
+///   bounded and contains no hole point (Triangle's rule). A loop with the domain on both sides is an interface between two
 ///   regions: it is returned twice, as the outer loop of the region inside it and, right
 ///   after, as a hole loop of the region around it (`Boundary_loop_2::twin`). A loop with the
 ///   domain on neither side is an error.
-/// - Without hole points, regions alternate with nesting depth: inside a depth-0 loop is
+/// - Otherwise, regions alternate with nesting depth: inside a depth-0 loop is
 ///   domain, inside a depth-1 loop a hole, inside a depth-2 loop (an island in a hole) domain
 ///   again, and so on.
 ///

@@ -480,6 +480,7 @@ Domain_2<K> offset_domain(const Domain_2<K>& domain, const Domain_loops_2<K>& lo
     }
   }
   out.holes = domain.holes;
+  out.every_hole_marked = domain.every_hole_marked;
   out.hole_labels = domain.hole_labels;
   // their maximum areas size the cells beyond the layers; a point within them is an error
   out.region_attributes = domain.region_attributes;
