@@ -689,7 +689,8 @@ TEST(Domain_loops_2, ErrorOverlappingSegments)
   Domain d;  // two squares sharing part of an edge
   add_square(d, 0, 0, 2, 2);
   add_loop(d, {{2, 1.5}, {2, 1}, {4, 1}, {4, 1.5}});
-  QM2_EXPECT_ERROR(d, "segments 1 (vertices 1 (2, 0) and 2 (2, 2)) and 4 (vertices 4 (2, 1.5) and 5 (2, 1)) overlap");
+  QM2_EXPECT_ERROR(d, "segments 1 (vertices 1 (2, 0) and 2 (2, 2)) and 4 (vertices 4 (2, 1.5) and 5 (2, 1)) overlap",
+                   ": vertex 4 (2, 1.5) lies on segment 1 (segments may meet only at their ends: split that segment there)");
 
   Domain back;  // a loop that runs back along its own previous segment
   add_loop(back, {{0, 0}, {2, 0}, {1, 0}, {1, 1}});

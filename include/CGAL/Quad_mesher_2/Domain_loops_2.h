@@ -525,7 +525,7 @@ private:
         const Point_2& q = m_d.points[sj[1 - f]];
         if(orient(p, v, q) == COLLINEAR && !m_traits.collinear_are_ordered_along_line_2_object()(p, v, q))
           throw Meshing_error("segments " + seg_str(i) + " and " + seg_str(j) + " overlap: they leave their shared " +
-                              vtx(si[e]) + " in the same direction");
+                              vtx(si[e]) + " in the same direction" + end_inside(i, j));
         return;
       }
     const Segment_2 s1 = m_traits.construct_segment_2_object()(a, b);
@@ -533,15 +533,26 @@ private:
     if(!m_traits.do_intersect_2_object()(s1, s2)) return;
     const std::string both = "segments " + seg_str(i) + " and " + seg_str(j);
     if(orient(a, b, c) == COLLINEAR && orient(a, b, d) == COLLINEAR)
-      throw Meshing_error(both + " overlap (they are collinear and share more than a point, or touch end to end)");
-    const std::size_t ends[4][2] = {{si[0], j}, {si[1], j}, {sj[0], i}, {sj[1], i}};
+      throw Meshing_error(both + " overlap (they are collinear and share more than a point, or touch end to end)" +
+                          end_inside(i, j));
+    const std::string inside = end_inside(i, j);
+    if(!inside.empty()) throw Meshing_error(both + " touch" + inside);
+    throw Meshing_error(both + " cross");
+  }
+
+  // ": vertex v lies on segment s (...)" for the first end of segment i or j on the other one
+  // but at its ends, or "" if none is
+  std::string end_inside(std::size_t i, std::size_t j) const
+  {
+    const std::size_t ends[4][2] = {{m_d.segments[i][0], j}, {m_d.segments[i][1], j},
+                                    {m_d.segments[j][0], i}, {m_d.segments[j][1], i}};
     for(const auto& e : ends) {
       const auto& s = m_d.segments[e[1]];
-      if(on_closed_segment(m_d.points[s[0]], m_d.points[s[1]], m_d.points[e[0]]))
-        throw Meshing_error(both + " touch: " + vtx(e[0]) + " lies on segment " + m_d.segment_label(e[1]) +
-                            " (a vertex may not lie inside a segment: to join them there, split the segment at it)");
+      if(e[0] != s[0] && e[0] != s[1] && on_closed_segment(m_d.points[s[0]], m_d.points[s[1]], m_d.points[e[0]]))
+        return ": " + vtx(e[0]) + " lies on segment " + m_d.segment_label(e[1]) +
+               " (segments may meet only at their ends: split that segment there)";
     }
-    throw Meshing_error(both + " cross");
+    return "";
   }
 
   // ---- 5. orientation ---------------------------------------------------------------------
