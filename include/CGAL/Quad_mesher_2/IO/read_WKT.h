@@ -365,8 +365,21 @@ struct Xy_hash
   }
 };
 
+/// Does ring `r` lie in ring `h` (in its closure)? Rings do not cross, so its first vertex off
+/// `h` tells; if all of them are on `h`, it fills `h` or cuts it along chords.
+template <class K>
+bool ring_lies_in(const std::vector<std::vector<typename K::Point_2> >& rings, std::size_t r, std::size_t h, const K& k)
+{
+  const auto& H = rings[h];
+  for(const auto& q : rings[r]) {
+    const CGAL::Bounded_side s = CGAL::bounded_side_2(H.begin(), H.end(), q, k);
+    if(s != CGAL::ON_BOUNDARY) return s == CGAL::ON_BOUNDED_SIDE;
+  }
+  return true;
+}
+
 /// Is `p` a valid seed for the hole bounded by ring `h`: strictly inside `h`, on no ring, and
-/// not inside any other ring nested in `h` (an island in the hole)? Decided with exact
+/// not inside any other ring lying in `h` (an island in the hole)? Decided with exact
 /// predicates (`bounded_side_2` through the traits).
 template <class K>
 bool is_valid_hole_seed(const typename K::Point_2& p, const std::vector<std::vector<typename K::Point_2> >& rings,
@@ -380,15 +393,8 @@ bool is_valid_hole_seed(const typename K::Point_2& p, const std::vector<std::vec
     const auto& R = rings[r];
     const CGAL::Bounded_side bs = CGAL::bounded_side_2(R.begin(), R.end(), p, k);
     if(bs == CGAL::ON_BOUNDARY) return false;
-    if(bs == CGAL::ON_BOUNDED_SIDE) {
-      // p is inside R: fine if R encloses H (e.g. H's outer ring), not if R lies in H.
-      for(const auto& q : R) {
-        const CGAL::Bounded_side s = CGAL::bounded_side_2(H.begin(), H.end(), q, k);
-        if(s == CGAL::ON_BOUNDARY) continue;
-        if(s == CGAL::ON_BOUNDED_SIDE) return false;
-        break;
-      }
-    }
+    // p is inside R: fine if R encloses H (e.g. H's outer ring), not if R lies in H.
+    if(bs == CGAL::ON_BOUNDED_SIDE && ring_lies_in(rings, r, h, k)) return false;
   }
   return true;
 }
@@ -552,6 +558,8 @@ inline bool check_wkt_linestrings(const Wkt_data& data, const std::string& sourc
 
 // The domain's vertices and segments, numbered from the rings, linestrings and points of a WKT
 // input, and how later messages name them: vertex or segment i of its ring or linestring, from 1.
+// A ring edge joining the vertices of an earlier ring edge is that segment, and `ring_edges`
+// lists both (check_wkt_shared_edges() says whether they may share it).
 struct Wkt_numbering
 {
   std::vector<std::array<double, 2> > xy;
@@ -559,6 +567,8 @@ struct Wkt_numbering
   std::vector<std::array<std::size_t, 2> > segs;
   std::vector<std::size_t> seg_lines;
   std::vector<std::string> point_labels, segment_labels;
+  std::vector<std::vector<std::size_t> > ring_segs;                  // per ring, the segment of each edge
+  std::vector<std::vector<std::array<std::size_t, 2> > > ring_edges; // per segment, its (ring, edge)s
 };
 
 typedef std::unordered_map<std::array<double, 2>, std::size_t, Xy_hash> Wkt_index;
@@ -570,9 +580,11 @@ inline std::string wkt_label(std::size_t i, const std::string& path, std::size_t
 }
 
 // Numbers the vertices of a ring (`closed`) or a linestring and adds its segments in order; a
-// vertex at the place of one already numbered (of a ring or a linestring) takes its index.
+// vertex at the place of one already numbered (of a ring or a linestring) takes its index. A
+// ring edge joining the two vertices of an earlier ring's edge, either way, is that segment
+// (`ring_segments`, by their vertices, lowest first).
 inline void number_wkt_path(const Wkt_path& path, const std::string& name, bool closed, Wkt_index& index,
-                            Wkt_numbering& n)
+                            std::map<std::array<std::size_t, 2>, std::size_t>* ring_segments, Wkt_numbering& n)
 {
   std::vector<std::size_t> ids(path.xy.size());
   for(std::size_t i = 0; i < path.xy.size(); ++i) {
@@ -585,23 +597,35 @@ inline void number_wkt_path(const Wkt_path& path, const std::string& name, bool 
     ids[i] = ins.first->second;
   }
   const std::size_t segments = closed ? ids.size() : ids.size() - 1;
+  std::vector<std::size_t> edge_segs(segments);
   for(std::size_t i = 0; i < segments; ++i) {
-    n.segs.push_back({ids[i], ids[(i + 1) % ids.size()]});
+    const std::size_t a = ids[i], b = ids[(i + 1) % ids.size()];
+    if(ring_segments) {
+      const auto ins = ring_segments->emplace(std::array<std::size_t, 2>{(std::min)(a, b), (std::max)(a, b)}, n.segs.size());
+      edge_segs[i] = ins.first->second;
+      if(!ins.second) continue;
+    }
+    n.segs.push_back({a, b});
     n.seg_lines.push_back(path.lines[i]);
     n.segment_labels.push_back(wkt_label(i, name, path.lines[i]));
   }
+  if(!ring_segments) return;
+  n.ring_edges.resize(n.segs.size());
+  for(std::size_t i = 0; i < segments; ++i) n.ring_edges[edge_segs[i]].push_back({n.ring_segs.size(), i});
+  n.ring_segs.push_back(std::move(edge_segs));
 }
 
 // Numbers the vertices, rings first, then linestrings, then points: rings and linestrings may
-// meet at a vertex (they then share it); isolated points must be new, and no two segments may
-// join the same vertices.
+// meet at a vertex (they then share it), rings of two polygons may share an edge; isolated
+// points must be new, and no other two segments may join the same vertices.
 inline bool number_wkt_vertices(const Wkt_data& data, const std::string& source, Wkt_numbering& n, std::string& msg)
 {
   auto where = [&](std::size_t line) { return wkt_where(source, line); };
   Wkt_index index;
-  for(const Wkt_ring& r : data.rings) number_wkt_path(r, r.describe(), true, index, n);
+  std::map<std::array<std::size_t, 2>, std::size_t> ring_segments;
+  for(const Wkt_ring& r : data.rings) number_wkt_path(r, r.describe(), true, index, &ring_segments, n);
   const std::size_t ring_vertices = n.xy.size();
-  for(const Wkt_linestring& s : data.linestrings) number_wkt_path(s, s.describe(), false, index, n);
+  for(const Wkt_linestring& s : data.linestrings) number_wkt_path(s, s.describe(), false, index, nullptr, n);
   const std::size_t path_vertices = n.xy.size();
   for(std::size_t i = 0; i < data.points.size(); ++i) {
     auto ins = index.emplace(data.points[i], n.xy.size());
@@ -625,6 +649,49 @@ inline bool number_wkt_vertices(const Wkt_data& data, const std::string& source,
           " is also segment " + n.segment_labels[d1];
     return false;
   }
+  return true;
+}
+
+// how messages name edge `e` ([ring, edge]) of the rings
+inline std::string wkt_edge_label(const Wkt_data& data, const std::array<std::size_t, 2>& e)
+{
+  const Wkt_ring& r = data.rings[e[0]];
+  return "edge " + wkt_label(e[1], r.describe(), r.lines[e[1]]);
+}
+
+// Rings of two polygons may share an edge with the polygons on either side of it (side by
+// side, or one filling the other's hole), not on one side (they would overlap). A polygon lies
+// left of its outer ring if that turns counterclockwise, right of its inner rings if they do.
+// Rings of one polygon may touch at a vertex only, as OGC asks.
+template <class K>
+bool check_wkt_shared_edges(const Wkt_data& data, const std::string& source, const Wkt_numbering& n,
+                            const std::vector<std::vector<typename K::Point_2> >& ring_points, const K& k,
+                            std::string& msg)
+{
+  std::vector<bool> area_left(data.rings.size());
+  for(std::size_t r = 0; r < data.rings.size(); ++r)
+    area_left[r] = (CGAL::orientation_2(ring_points[r].begin(), ring_points[r].end(), k) == CGAL::COUNTERCLOCKWISE) ==
+                   (data.rings[r].index == 1);
+  // whether edge e has its polygon on the left of segment s, from its vertex 0 to its vertex 1
+  auto polygon_left = [&](const std::array<std::size_t, 2>& e, std::size_t s) {
+    return area_left[e[0]] == (n.xy[n.segs[s][0]] == data.rings[e[0]].xy[e[1]]);
+  };
+  for(std::size_t s = 0; s < n.ring_edges.size(); ++s)
+    for(std::size_t j = 1; j < n.ring_edges[s].size(); ++j)
+      for(std::size_t i = 0; i < j; ++i) {
+        const std::array<std::size_t, 2>& a = n.ring_edges[s][i];
+        const std::array<std::size_t, 2>& b = n.ring_edges[s][j];
+        const std::size_t pa = data.rings[a[0]].polygon, pb = data.rings[b[0]].polygon;
+        if(pa != pb && polygon_left(a, s) != polygon_left(b, s)) continue;
+        const auto& sg = n.segs[s];
+        msg = wkt_where(source, data.rings[b[0]].lines[b[1]]) + wkt_edge_label(data, b) + " from " +
+              format_point(n.xy[sg[0]][0], n.xy[sg[0]][1]) + " to " + format_point(n.xy[sg[1]][0], n.xy[sg[1]][1]) +
+              " is also " + wkt_edge_label(data, a) +
+              (pa == pb ? ": the rings of a polygon may touch at a vertex, not share an edge"
+                        : ": polygons " + std::to_string(pa) + " and " + std::to_string(pb) + " overlap, both lying on "
+                          "one side of it; polygons may share an edge only side by side, or one filling the other's hole");
+        return false;
+      }
   return true;
 }
 
@@ -685,14 +752,61 @@ bool check_wkt_polygons_apart(const Wkt_data& data, const std::string& source,
   return true;
 }
 
-// Hole seeds, one per inner ring.
+// The outer rings of the other polygons that lie in inner ring h: islands in the hole, at any
+// depth.
 template <class K>
-bool wkt_hole_seeds(const Wkt_data& data, const std::string& source,
+std::vector<std::size_t> wkt_outer_rings_in(const Wkt_data& data, const std::vector<std::vector<typename K::Point_2> >& ring_points,
+                                            const std::vector<Bbox_2>& boxes, std::size_t h, const K& k)
+{
+  std::vector<std::size_t> in_h;
+  for(std::size_t r = 0; r < data.rings.size(); ++r)
+    if(data.rings[r].index == 1 && data.rings[r].polygon != data.rings[h].polygon && CGAL::do_overlap(boxes[r], boxes[h]) &&
+       ring_lies_in(ring_points, r, h, k))
+      in_h.push_back(r);
+  return in_h;
+}
+
+// The parts of the hole of inner ring h that no polygon covers, given the outer rings `in_h` of
+// the polygons in it. Their segments and h's make a plane graph with E - V + C faces inside h
+// (Euler), one inside each ring of `in_h` and the others uncovered. Less than 1 if they fill h.
+inline std::ptrdiff_t wkt_uncovered_parts(const Wkt_numbering& n, std::size_t h, const std::vector<std::size_t>& in_h)
+{
+  std::vector<std::size_t> segs = n.ring_segs[h];
+  for(std::size_t r : in_h) segs.insert(segs.end(), n.ring_segs[r].begin(), n.ring_segs[r].end());
+  std::sort(segs.begin(), segs.end());
+  segs.erase(std::unique(segs.begin(), segs.end()), segs.end());
+  std::map<std::size_t, std::size_t> parent;  // union-find over the vertices
+  auto find = [&](std::size_t v) {
+    while(parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for(std::size_t s : segs)
+    for(std::size_t v : n.segs[s]) parent.emplace(v, v);
+  std::ptrdiff_t components = std::ptrdiff_t(parent.size());
+  for(std::size_t s : segs) {
+    const std::size_t a = find(n.segs[s][0]), b = find(n.segs[s][1]);
+    if(a != b) { parent[a] = b; --components; }
+  }
+  return std::ptrdiff_t(segs.size()) - std::ptrdiff_t(parent.size()) + components - std::ptrdiff_t(in_h.size());
+}
+
+// Hole seeds, one per inner ring, in the part of its hole that the polygons inside it leave
+// uncovered; none if they fill it (their domain). One seed marks one part: a hole that they
+// cut into several is an error.
+template <class K>
+bool wkt_hole_seeds(const Wkt_data& data, const std::string& source, const Wkt_numbering& n,
                     const std::vector<std::vector<typename K::Point_2> >& ring_points, const std::vector<Bbox_2>& boxes,
                     const K& k, std::vector<typename K::Point_2>& holes, std::string& msg)
 {
   for(std::size_t ri = 0; ri < data.rings.size(); ++ri) {
     if(data.rings[ri].index == 1) continue;
+    const std::ptrdiff_t parts = wkt_uncovered_parts(n, ri, wkt_outer_rings_in(data, ring_points, boxes, ri, k));
+    if(parts < 1) continue;
+    if(parts > 1) {
+      msg = wkt_where(source, data.rings[ri].line) + "the polygons inside " + data.rings[ri].describe() + " cut the hole into " +
+            std::to_string(parts) + " parts; a hole is one part: give each part as an inner ring, or fill it with a polygon";
+      return false;
+    }
     typename K::Point_2 seed;
     if(!find_hole_seed(ring_points, boxes, ri, k, seed)) {
       msg = wkt_where(source, data.rings[ri].line) + "cannot find a point strictly inside " + data.rings[ri].describe() +
@@ -712,16 +826,18 @@ bool wkt_to_domain(Wkt_data& data, const std::string& source, Domain_2<K>& out, 
   std::vector<std::vector<Point_2> > ring_points;
   Wkt_numbering numbering;
   if(!check_wkt_rings(data, source, ring_points, k, msg) || !check_wkt_linestrings(data, source, msg) ||
-     !number_wkt_vertices(data, source, numbering, msg))
+     !number_wkt_vertices(data, source, numbering, msg) ||
+     !check_wkt_shared_edges(data, source, numbering, ring_points, k, msg))
     return false;
   const std::vector<Bbox_2> boxes = ring_boxes(ring_points);
   std::vector<Point_2> holes;
   if(!check_wkt_polygons_apart(data, source, ring_points, boxes, k, msg) ||
-     !wkt_hole_seeds(data, source, ring_points, boxes, k, holes, msg))
+     !wkt_hole_seeds(data, source, numbering, ring_points, boxes, k, holes, msg))
     return false;
   append_points<K>(numbering.xy, out.points, k);
   out.segments = std::move(numbering.segs);
   out.holes = std::move(holes);
+  out.every_hole_marked = true;  // an inner ring a polygon fills has no seed, and is no hole
   out.point_labels = std::move(numbering.point_labels);
   out.segment_labels = std::move(numbering.segment_labels);
   return true;
