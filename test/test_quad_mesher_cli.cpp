@@ -533,6 +533,37 @@ TEST(quad_mesher_cli, a_wkt_linestring_is_meshed_as_the_crack_of_the_same_poly)
   EXPECT_EQ(slurp(from_wkt), slurp(from_poly));
 }
 
+// Polygons of a MULTIPOLYGON sharing edges are regions of one domain: a 2 x 2 grid meshes as
+// the .poly of its 9 points and 12 segments in the reader's order, one region a polygon; an
+// island polygon filling a lake ring is a region, not a hole.
+TEST(quad_mesher_cli, wkt_polygons_sharing_edges_mesh_as_regions_of_the_same_poly)
+{
+  auto wkt = scratch("grid.wkt"), poly = scratch("grid.poly"), from_wkt = scratch("grid_wkt.off"),
+       from_poly = scratch("grid_poly.off"), json = scratch("grid.json");
+  std::ofstream(wkt) << "MULTIPOLYGON (((0 0, 1 0, 1 1, 0 1, 0 0)), ((1 0, 2 0, 2 1, 1 1, 1 0)),\n"
+                        "((0 1, 1 1, 1 2, 0 2, 0 1)), ((1 1, 2 1, 2 2, 1 2, 1 1)))\n";
+  std::ofstream(poly) << "9 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n5 2 0\n6 2 1\n7 1 2\n8 0 2\n9 2 2\n12 0\n"
+                         "1 1 2\n2 2 3\n3 3 4\n4 4 1\n5 2 5\n6 5 6\n7 6 3\n8 3 7\n9 7 8\n10 8 4\n11 6 9\n12 9 7\n0\n";
+  Cli_run r = run(wkt.string() + " --kernel " + kernel_name + " -o " + from_wkt.string() + " --report " + json.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto report = nlohmann::json::parse(slurp(json));
+  EXPECT_EQ(report["input"]["segments"].get<int>(), 12);
+  EXPECT_EQ(report["regions"].size(), 4u);
+  EXPECT_TRUE(report["validity"]["valid"].get<bool>());
+  r = run(poly.string() + " --kernel " + kernel_name + " -o " + from_poly.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(slurp(from_wkt), slurp(from_poly));
+
+  std::ofstream(wkt) << "MULTIPOLYGON (((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 3 1, 3 3, 1 3, 1 1)),\n"
+                        "((1 1, 1 3, 3 3, 3 1, 1 1)))\n";
+  r = run(wkt.string() + " --kernel " + kernel_name + " -o " + from_wkt.string() + " --report " + json.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  report = nlohmann::json::parse(slurp(json));
+  EXPECT_EQ(report["input"]["holes"].get<int>(), 0);
+  EXPECT_EQ(report["regions"].size(), 2u);
+  EXPECT_TRUE(report["validity"]["valid"].get<bool>());
+}
+
 TEST(quad_mesher_cli, boundary_layers_on_an_air_foil)
 {
   const std::string naca = std::string(QM2_DATA_DIR) + "/naca0012/naca0012_sharp.poly";

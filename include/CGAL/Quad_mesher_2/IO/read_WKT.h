@@ -867,14 +867,20 @@ bool read_WKT_impl(std::string&& text, const std::string& source, Domain_2<K>& o
 ///
 /// Each ring becomes a closed chain of segments; it must end at its first point, as WKT
 /// asks (an open ring is an error, not closed silently). Each ring must have at least 3 distinct vertices, no repeated vertex and be
-/// simple (`CGAL::is_simple_2`). Rings may touch each other at a vertex, which is then
-/// shared; an edge shared by two rings, or a POINT equal to another point or ring vertex,
-/// is an error. For each inner ring (hole) a seed point is added to `out.holes`: it lies
-/// strictly inside the hole ring and outside every ring nested in the hole (islands),
-/// checked with exact predicates. Ring orientation is kept as in the file. A polygon inside
+/// simple (`CGAL::is_simple_2`). A vertex at the place of one already read (exact
+/// coordinates) is that vertex, and a ring edge joining the same two vertices as an earlier
+/// ring's edge, either way, is that one segment: polygons sharing edges are regions of one
+/// domain, meshed together (see `extract_loops()`). An edge shared by two rings of one
+/// polygon, or by two polygons on one side of it (they overlap), or a POINT equal to another
+/// point or ring vertex, is an error. For each inner ring (hole) a seed point is added to
+/// `out.holes`: it lies strictly inside the hole ring, on no ring and outside every polygon
+/// in the hole (islands), checked with exact predicates. An inner ring that the polygons in
+/// it fill (an island given as its own polygon, a lake tiled by several) gets no seed, and
+/// one they cut into several parts is an error; `out.every_hole_marked` is set, so a hole is
+/// exactly a face holding a seed. Ring orientation is kept as in the file. A polygon inside
 /// another polygon's area (not in one of its holes) is an error, as OGC forbids overlapping
-/// polygons. Crossings between different rings are not detected here (the mesher's domain
-/// checks name them).
+/// polygons. Crossings between different rings, and a vertex of one ring inside another's
+/// edge, are not detected here (the mesher's domain checks name them).
 ///
 /// Each linestring becomes an open polyline of segments in its order, a crack in the domain
 /// (see `extract_loops()`): it needs a polygon in the same collection, at least 2 distinct
