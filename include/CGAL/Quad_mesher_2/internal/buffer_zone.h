@@ -95,7 +95,7 @@ public:
     : mesh(core), local_size(core_size), domain(input), loops(input_loops), traits(kernel)
   {
     locator = make_loop_locator(domain, loops);
-    find_interface_wedges();
+    find_interface_corners();
     xy.reserve(mesh.points.capacity()); // the room the clearance left for the layers' points
     xy.resize(mesh.points.size());
     for(std::size_t v = 0; v < mesh.points.size(); ++v)
@@ -399,24 +399,26 @@ public:
   // Elsewhere both are the corner's angle.
   double sharp_corner_angle(std::size_t v) const
   {
-    return on_interface(v) ? interface_wedges[v][0] : input_corner_angle(v);
+    return on_interface(v) ? interface_corners[v]->sharpest : input_corner_angle(v);
   }
   double wide_corner_angle(std::size_t v) const
   {
-    return on_interface(v) ? interface_wedges[v][1] : input_corner_angle(v);
+    return on_interface(v) ? interface_corners[v]->widest : input_corner_angle(v);
   }
-  bool on_interface(std::size_t v) const { return v < interface_wedges.size() && !std::isnan(interface_wedges[v][0]); }
+  bool on_interface(std::size_t v) const { return v < interface_corners.size() && interface_corners[v] != nullptr; }
 
-  // per input point on an interface, the sharpest and the widest corner of the domain there
-  void find_interface_wedges()
+  // the corners of the domain about each input point on an interface
+  void find_interface_corners()
   {
     for(std::size_t l = 0; l < loops.loops.size(); ++l)
       for(std::size_t k = 0; k < loops.loops[l].vertices.size(); ++k) {
         if(!on_edge_twin(loops.loops[l], k)) continue;
         const double a = loop_corner_angle(domain, loops.loops[l], k);
-        auto [it, is_new] = wedges_at_input.emplace(loops.loops[l].vertices[k], std::array<double, 2>{ { a, a } });
-        it->second = { { (std::min)(it->second[0], a), (std::max)(it->second[1], a) } };
-        if(a < 45.0) sharp_wedges_at_input[loops.loops[l].vertices[k]].push_back(a);
+        auto [it, is_new] = corners_at_input.emplace(loops.loops[l].vertices[k], Interface_corners{ a, a, {} });
+        Interface_corners& corners = it->second;
+        corners.sharpest = (std::min)(corners.sharpest, a);
+        corners.widest = (std::max)(corners.widest, a);
+        if(a < 45.0) corners.under_45.push_back(a);
       }
   }
 
@@ -430,7 +432,7 @@ public:
     const double alpha = sharp_corner_angle(v);
     if(!(alpha < 45.0)) return false; // false for NaN
     if(!on_interface(v)) return angle >= alpha - 1e-3;
-    for(double a : sharp_wedges_at_input.at(interface_input[v]))
+    for(double a : interface_corners[v]->under_45)
       if(std::abs(angle - a) <= 1e-3) return true;
     return false;
   }
@@ -510,11 +512,9 @@ public:
     input_vertex[input] = id;
     corner_angle.resize(id + 1, std::numeric_limits<double>::quiet_NaN());
     corner_angle[id] = loop_corner_angle(domain, loops.loops[l], k);
-    if(const auto it = wedges_at_input.find(input); it != wedges_at_input.end()) {
-      interface_wedges.resize(id + 1, { { std::numeric_limits<double>::quiet_NaN(), 0.0 } });
-      interface_wedges[id] = it->second;
-      interface_input.resize(id + 1, none);
-      interface_input[id] = input;
+    if(const auto it = corners_at_input.find(input); it != corners_at_input.end()) {
+      interface_corners.resize(id + 1, nullptr);
+      interface_corners[id] = &it->second;
     }
     return id;
   }
@@ -649,11 +649,11 @@ public:
   std::vector<std::size_t> first_core; // core vertex of each first buffer point
   std::vector<std::size_t> input_vertex; // per input point: its mesh point, or none
   std::vector<double> corner_angle; // per mesh point: its input corner's angle, or NaN
-  // per mesh point: an input vertex on an interface, its sharpest and widest corner (NaN: none)
-  std::vector<std::array<double, 2>> interface_wedges;
-  std::vector<std::size_t> interface_input; // per mesh point on an interface: its input point
-  std::unordered_map<std::size_t, std::array<double, 2>> wedges_at_input; // by input point
-  std::unordered_map<std::size_t, std::vector<double>> sharp_wedges_at_input; // the corners under 45 degrees
+  // the corners of the domain about an input point on an interface, one in each region
+  // about it: the sharpest, the widest, and those under 45 degrees
+  struct Interface_corners { double sharpest, widest; std::vector<double> under_45; };
+  std::unordered_map<std::size_t, Interface_corners> corners_at_input; // by input point (its nodes stay put)
+  std::vector<const Interface_corners*> interface_corners; // per mesh point: its input point's, or null
   std::vector<Slide> slide_of; // per point: its Slide (loop none: it does not slide; see slide())
   std::vector<char> on_cycle_mark; // per core point
   std::vector<char> repaired_mark; // per point
