@@ -333,7 +333,8 @@ private:
   }
 
   // m_component_of_segment: the segments joined through shared vertices, numbered by their
-  // lowest segment; m_has_junction: whether a vertex of the component has three or more
+  // lowest segment; m_has_junction: whether a vertex of the component has three or more;
+  // m_junction_segments: the segments of each component with a junction, increasing
   void find_components()
   {
     const std::size_t np = m_d.points.size(), ns = m_d.segments.size();
@@ -353,6 +354,9 @@ private:
       for(std::size_t v : m_d.segments[s])
         if(m_degree[v] > 2) m_has_junction[c] = true;
     }
+    m_junction_segments.resize(m_has_junction.size());
+    for(std::size_t s = 0; s < ns; ++s)
+      if(m_has_junction[m_component_of_segment[s]]) m_junction_segments[m_component_of_segment[s]].push_back(s);
   }
 
   // ---- 2b. the faces of a component with junctions ---------------------------------------
@@ -363,9 +367,7 @@ private:
   // its lexicographically smallest vertex. A cycle starts at its lowest half-edge.
   void trace_faces(std::size_t component)
   {
-    std::vector<std::size_t> segs;
-    for(std::size_t s = 0; s < m_d.segments.size(); ++s)
-      if(m_component_of_segment[s] == component) segs.push_back(s);
+    const std::vector<std::size_t>& segs = m_junction_segments[component];
     std::map<std::size_t, std::vector<std::size_t> > around; // per vertex, its half-edges counterclockwise
     for(std::size_t s : segs)
       for(std::size_t e = 0; e < 2; ++e) around[m_d.segments[s][e]].push_back(2 * s + e);
@@ -776,6 +778,7 @@ private:
   std::vector<std::size_t> m_loop_of_segment;
   std::vector<std::size_t> m_component_of_segment;
   std::vector<bool> m_has_junction;    // per component: a vertex of three segments or more
+  std::vector<std::vector<std::size_t> > m_junction_segments; // per component with a junction
   // per segment: the loops whose inside a ray crossing it enters or leaves (none, one or two)
   std::vector<std::array<std::size_t, 2> > m_counted;
   // per segment of a component with junctions: the cycles of its half-edges, along and back

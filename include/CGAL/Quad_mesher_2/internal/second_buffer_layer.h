@@ -19,7 +19,9 @@
 // only switch at a gap with an even number of G edges; without one it shears end to end).
 // An interface is built from its first side, which keeps every loop vertex; the strip on its
 // twin takes that chain as it is, so that both sides share its nodes. A crack's strip is
-// paired freely first; then both of its sides take the nodes chosen on the first side.
+// paired freely first; then both of its sides take the nodes chosen on the first side. A face
+// of a junction's arrangement does both edge by edge: it takes the nodes of the faces built
+// before it on the segments it shares with them.
 
 #ifndef CGAL_QUAD_MESHER_2_INTERNAL_SECOND_BUFFER_LAYER_H
 #define CGAL_QUAD_MESHER_2_INTERNAL_SECOND_BUFFER_LAYER_H
@@ -113,7 +115,7 @@ private:
   // own (free, or shared with a loop built later), as best_plan() does; the edges shared with
   // a loop built before take that loop's nodes, and those along an edge's reverse on this
   // loop (a crack in the face) the nodes of the edge. Then the strip is paired onto that
-  // chain, with extra nodes only on its own edges.
+  // chain, with extra nodes only where no node is settled (on_settled_edge()).
   Strip_plan plan_on_shared_edges()
   {
     bool any_own = false;
