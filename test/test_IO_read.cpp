@@ -159,6 +159,18 @@ struct Bad_case
   const char* keyword;
 };
 
+// Expects the loops of `d` to be a square with no twin and a crack, its own twin, of the loop
+// vertices `crack` (along it and back).
+inline void expect_the_square_and_a_crack(const Domain& d, const std::vector<std::size_t>& crack)
+{
+  const auto loops = CGAL::Quad_mesher_2::extract_loops(d);
+  ASSERT_EQ(loops.loops.size(), 2u);
+  const std::size_t l = loops.loops[0].twin == 0 ? 0 : 1;
+  EXPECT_EQ(loops.loops[l].twin, l);
+  EXPECT_EQ(loops.loops[l].vertices, crack);
+  EXPECT_EQ(loops.loops[1 - l].twin, std::size_t(-1));
+}
+
 } // namespace qm2_test_io_read
 
 // ---------------------------------------------------------------------------------------------
@@ -730,12 +742,7 @@ TEST(IO_read, WktLinestringInAPolygonIsACrack)
   EXPECT_EQ(d.point_label(6), "3 of linestring 1 (line 3)");
   EXPECT_EQ(d.segment_label(5), "2 of linestring 1 (line 2)");
   EXPECT_TRUE(d.holes.empty());
-  const auto loops = CGAL::Quad_mesher_2::extract_loops(d);
-  ASSERT_EQ(loops.loops.size(), 2u);
-  const std::size_t l = loops.loops[0].twin == 0 ? 0 : 1;
-  EXPECT_EQ(loops.loops[l].twin, l);
-  EXPECT_EQ(loops.loops[l].vertices, (std::vector<std::size_t>{4, 5, 6, 5}));
-  EXPECT_EQ(loops.loops[1 - l].twin, std::size_t(-1));
+  expect_the_square_and_a_crack(d, {4, 5, 6, 5});
 }
 
 // Polygons of a MULTIPOLYGON (or POLYGONs of a GEOMETRYCOLLECTION) sharing an edge share its
@@ -893,16 +900,11 @@ TEST(IO_read, WktMultilinestringOfTwoMeetingAtAVertex)
   EXPECT_EQ(d.segments[4], (Domain::Segment{4, 5}));
   EXPECT_EQ(d.segments[5], (Domain::Segment{6, 5}));
   EXPECT_EQ(d.segment_label(5), "1 of linestring 2 (line 3)");
-  const auto loops = CGAL::Quad_mesher_2::extract_loops(d);
-  ASSERT_EQ(loops.loops.size(), 2u);
-  const std::size_t l = loops.loops[0].twin == 0 ? 0 : 1;
-  EXPECT_EQ(loops.loops[l].twin, l);
-  EXPECT_EQ(loops.loops[l].vertices, (std::vector<std::size_t>{4, 5, 6, 5}));
-  EXPECT_EQ(loops.loops[1 - l].twin, std::size_t(-1));
+  expect_the_square_and_a_crack(d, {4, 5, 6, 5});
 }
 
-// A linestring ending on a polygon's vertex takes that vertex's index; extract_loops() then
-// refuses the crack touching the boundary, naming the vertex as the file does.
+// A linestring ending on a polygon's vertex takes that vertex's index: a crack from a corner,
+// which the face walks along and back.
 TEST(IO_read, WktLinestringEndingOnAPolygonVertexSharesIt)
 {
   using namespace qm2_test_io_read;

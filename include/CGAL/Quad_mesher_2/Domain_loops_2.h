@@ -214,7 +214,7 @@ private:
     if(m_envelope[l])
       return "the outline of the segments that meet at junctions, from " + vtx(m_loops[l][0]) + " (segment " +
              m_d.segment_label(m_loop_first_segment[l]) + ")";
-    if(m_face_of_junction[l])
+    if(traced(l))
       return "the face of " + std::to_string(m_loops[l].size()) + " vertices starting at " + vtx(m_loops[l][0]) +
              " (segment " + m_d.segment_label(m_loop_first_segment[l]) + ")";
     if(m_crack[l])
@@ -327,7 +327,6 @@ private:
   {
     m_component.push_back(component);
     m_crack.push_back(crack);
-    m_face_of_junction.push_back(false);
     m_envelope.push_back(envelope);
     m_loop_first_segment.push_back(first_segment);
   }
@@ -401,7 +400,6 @@ private:
         } while(h != h0);
         m_loops.push_back(std::move(verts));
         add_loop(component, false, envelope, s);
-        m_face_of_junction.back() = !envelope;
       }
     for(std::size_t s : segs) {
       m_loop_of_segment[s] = cycle_of[2 * s];
@@ -410,7 +408,7 @@ private:
       if(a == b) continue; // a segment with one face on both sides crosses a ray into it twice
       std::size_t k = 0;
       for(std::size_t c : {a, b})
-        if(m_face_of_junction[c]) m_counted[s][k++] = c;
+        if(!m_envelope[c]) m_counted[s][k++] = c;
     }
   }
 
@@ -784,7 +782,6 @@ private:
   // per segment of a component with junctions: the cycles of its half-edges, along and back
   std::vector<std::array<std::size_t, 2> > m_sides;
   std::vector<std::size_t> m_component; // per loop
-  std::vector<bool> m_face_of_junction; // per loop: a face's cycle of a component with junctions
   std::vector<bool> m_envelope;         // per loop: the cycle around a component with junctions
   std::vector<bool> m_kept;             // per loop: with the domain on its left, so returned
   std::vector<Bbox_2> m_seg_boxes;
@@ -872,13 +869,21 @@ Domain_loops_2<K> extract_loops(const Domain_2<K>& domain, const K& traits = K()
 
 namespace internal {
 
-/// Throws Meshing_error naming the first vertex of three segments or more, for `stage` (what
-/// does not take junctions yet: "boundary layers", "the curve decomposition").
+/// the number of segments at each point of `domain` (three or more: a junction)
 template <class K>
-void reject_junctions(const Domain_2<K>& domain, const std::string& stage)
+std::vector<std::size_t> segment_degrees(const Domain_2<K>& domain)
 {
   std::vector<std::size_t> degree(domain.points.size(), 0);
   for(const auto& sg : domain.segments) ++degree[sg[0]], ++degree[sg[1]];
+  return degree;
+}
+
+/// Throws Meshing_error naming the first vertex of three segments or more, for `stage` (what
+/// does not take junctions yet: "boundary layers", "curve decompositions").
+template <class K>
+void reject_junctions(const Domain_2<K>& domain, const std::string& stage)
+{
+  const std::vector<std::size_t> degree = segment_degrees(domain);
   for(std::size_t v = 0; v < degree.size(); ++v)
     if(degree[v] > 2)
       throw Meshing_error("vertex " + domain.point_label(v) + " " + loops_format_point(domain.points[v], K()) + " joins " +

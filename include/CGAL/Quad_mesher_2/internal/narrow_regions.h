@@ -234,8 +234,7 @@ std::vector<Boundary_gap_finder::Segment> gap_finder_segments(const Domain_2<K>&
                                                               const K& traits, std::vector<double>& loop_lengths,
                                                               std::vector<std::vector<Boundary_gap_finder::Junction>>& junctions)
 {
-  std::vector<std::size_t> degree(domain.points.size(), 0);
-  for(const auto& sg : domain.segments) ++degree[sg[0]], ++degree[sg[1]];
+  const std::vector<std::size_t> degree = segment_degrees(domain);
   typedef Boundary_gap_finder::P P;
   auto x_of = traits.compute_x_2_object();
   auto y_of = traits.compute_y_2_object();

@@ -17,11 +17,11 @@
 // middle of its longest edge): the pairing decides where, which is how an odd triangle
 // count is made even and how a long ladder switches between its two phases (a ladder can
 // only switch at a gap with an even number of G edges; without one it shears end to end).
-// An interface is built from its first side, which keeps every loop vertex; the strip on its
-// twin takes that chain as it is, so that both sides share its nodes. A crack's strip is
-// paired freely first; then both of its sides take the nodes chosen on the first side. A face
-// of a junction's arrangement does both edge by edge: it takes the nodes of the faces built
-// before it on the segments it shares with them.
+// A segment with the domain on both sides (an interface, a crack, two faces at a junction)
+// keeps every vertex and is paired from the side built first; the strip on the other side
+// takes those nodes as they are, so that both sides share them: an interface's second twin
+// takes the whole chain of its first, a crack's way back mirrors its way out, a face at a
+// junction takes the nodes of the faces built before it on the segments it shares with them.
 
 #ifndef CGAL_QUAD_MESHER_2_INTERNAL_SECOND_BUFFER_LAYER_H
 #define CGAL_QUAD_MESHER_2_INTERNAL_SECOND_BUFFER_LAYER_H
@@ -78,24 +78,12 @@ public:
   void build()
   {
     if(!m_projection.project()) return;
-    add_plan(on_interface_built_from_the_other_side() ? plan_on_twin_chain()
-             : on_crack()                             ? plan_on_crack()
-             : shares_edges()                         ? plan_on_shared_edges()
-                                                      : best_plan());
+    add_plan(shares_edges() ? plan_on_shared_edges() : best_plan());
   }
 
 private:
-  // Whether the cycle's loop is the second of an interface's twins: the strip on the first
-  // side chose the chain, which the second must take as it is, so that the two sides share
-  // its nodes (Second_buffer_layer builds the first sides first).
-  bool on_interface_built_from_the_other_side() const { return m_zone.loops.loops[l].twin < l; }
-
-  // whether the cycle's loop is a crack, the loop along an open polyline and back (its own
-  // twin): its two sides must share their nodes
-  bool on_crack() const { return m_zone.loops.loops[l].twin == l; }
-
-  // whether an edge of the cycle's loop has the domain on both sides, the loop being no
-  // interface's and no crack's whole: a face of a junction's arrangement
+  // whether an edge of the cycle's loop has the domain on both sides (an interface, a crack,
+  // a face at a junction): the strips on either side must share its nodes
   bool shares_edges() const
   {
     for(std::size_t k = 0; k < nv; ++k)
@@ -111,11 +99,12 @@ private:
     return twin[0] != none && (twin[0] < l || (twin[0] == l && twin[1] < k));
   }
 
-  // A face of a junction's arrangement: the pairing chooses the nodes on the edges of its
-  // own (free, or shared with a loop built later), as best_plan() does; the edges shared with
-  // a loop built before take that loop's nodes, and those along an edge's reverse on this
-  // loop (a crack in the face) the nodes of the edge. Then the strip is paired onto that
-  // chain, with extra nodes only where no node is settled (on_settled_edge()).
+  // A loop with shared edges: the pairing chooses the nodes on the edges of its own (free, or
+  // shared with a loop built later), as best_plan() does; the edges shared with a loop built
+  // before take that loop's nodes (an interface's second side takes its whole chain), and
+  // those along an edge's reverse on this loop (a crack's way back) the nodes of the edge. Then
+  // the strip is paired onto that chain, with extra nodes only where no node is settled
+  // (on_settled_edge()). Every vertex of a shared edge is a node.
   Strip_plan plan_on_shared_edges()
   {
     bool any_own = false;
@@ -150,58 +139,19 @@ private:
           if(twin[0] != l) fixed.push_back(id);
         }
     }
-    return plan_without_flat_crack_nodes(std::move(by_param), fixed, true);
+    return plan_without_invalid_fans(std::move(by_param), fixed);
   }
 
-  // The pairing onto the chain the twin's strip made: each F point takes the chain node
-  // nearest its projection (in order along the loop), with no node added or left out.
-  Strip_plan plan_on_twin_chain()
-  {
-    const std::vector<std::size_t>& chain = m_zone.loop_chain[m_zone.loops.loops[l].twin];
-    if(chain.empty()) return Strip_plan(); // not ok: the twin's strip failed
-    std::vector<std::pair<double, std::size_t>> by_param; // arclength, mesh id
-    for(std::size_t id : chain) {
-      const Loop_locator::Hit h = m_zone.locator->closest(m_zone.xy[id], 1e-9 * m_zone.locator->diagonal(), l);
-      by_param.emplace_back(m_zone.locator->param(h), id);
-    }
-    return plan_on_chain(std::move(by_param), false);
-  }
-
-  // A crack's strip: the pairing chooses the nodes along the polyline's first side (loop
-  // edges 0 to nv/2 - 1), and the other side takes them, mirrored, as the twin of an
-  // interface takes its chain (plan_on_twin_chain()).
-  Strip_plan plan_on_crack()
-  {
-    const Strip_plan free = best_plan();
-    if(!free.ok) return free;
-    const std::size_t half = nv / 2;
-    const Loop_locator& at = *m_zone.locator;
-    std::vector<std::pair<double, std::size_t>> by_param; // arclength, mesh id
-    for(std::size_t k = 0; k <= half; ++k) { // a crack keeps every vertex (candidate_nodes())
-      const std::size_t id = m_zone.input_vertex_point(l, k);
-      by_param.emplace_back(at.arc(l, k), id);
-      if(k > 0 && k < half) by_param.emplace_back(at.arc(l, nv - k), id); // the way back
-    }
-    for(std::size_t id : free.gid) // on edge e of the first side, and on its reverse nv - 1 - e
-      if(const auto* slide = m_zone.slide(id); slide != nullptr && slide->edge < half) {
-        const std::size_t e = slide->edge;
-        const double from_start = length_2d(m_zone.xy[id] - loop_xy[e]);
-        by_param.emplace_back(at.arc(l, e) + from_start, id);
-        by_param.emplace_back(at.arc(l, nv - 1 - e) + (at.arc(l, e + 1) - at.arc(l, e)) - from_start, id);
-      }
-    return plan_without_flat_crack_nodes(std::move(by_param), {}, false);
-  }
-
-  // The pairing onto a crack's chain (plan_on_chain()); where a side's F point must fan over
+  // The pairing onto a shared chain (plan_on_chain()); where a side's F point must fan over
   // three chain nodes in a row into an invalid quad, or one with the boundary's angle out of
   // range (the other side, a reflex corner's, took more nodes there), the middle node leaves
   // both sides if it is no input vertex, else its two neighbours that are none, and the strip
   // is paired again, while that lowers its cost. The nodes in `fixed` (a strip built before
   // has them) stay.
-  Strip_plan plan_without_flat_crack_nodes(std::vector<std::pair<double, std::size_t>> by_param,
-                                           const std::vector<std::size_t>& fixed, bool with_extra_nodes)
+  Strip_plan plan_without_invalid_fans(std::vector<std::pair<double, std::size_t>> by_param,
+                                       const std::vector<std::size_t>& fixed)
   {
-    Strip_plan plan = plan_on_chain(by_param, with_extra_nodes);
+    Strip_plan plan = plan_on_chain(by_param);
     for(int attempt = 0; attempt < 8 && plan.best.cost.sum >= 1e12; ++attempt) {
       std::vector<std::size_t> leave_out = nodes_about_invalid_fans(plan);
       leave_out.erase(std::remove_if(leave_out.begin(), leave_out.end(),
@@ -211,7 +161,7 @@ private:
       std::vector<std::pair<double, std::size_t>> fewer;
       for(const auto& node : by_param)
         if(std::find(leave_out.begin(), leave_out.end(), node.second) == leave_out.end()) fewer.push_back(node);
-      Strip_plan again = plan_on_chain(fewer, with_extra_nodes);
+      Strip_plan again = plan_on_chain(fewer);
       if(!(again.best.cost < plan.best.cost)) break;
       plan = std::move(again);
       by_param = std::move(fewer);
@@ -244,21 +194,17 @@ private:
 
   // The pairing onto a given chain (arclength along this loop, mesh id): each F point takes
   // the chain node nearest its projection (in order along the loop), with no node left out,
-  // and none added but, `with_extra_nodes`, a gap's extra node on an edge whose nodes are not
-  // settled (on_settled_edge()).
-  Strip_plan plan_on_chain(std::vector<std::pair<double, std::size_t>> by_param, bool with_extra_nodes)
+  // and none added but a gap's extra node on an edge whose nodes are not settled
+  // (on_settled_edge()).
+  Strip_plan plan_on_chain(std::vector<std::pair<double, std::size_t>> by_param)
   {
     Strip_plan plan;
     const Strip_positions proj = m_projection.spread(std::vector<bool>(nv, false));
     Strip_nodes strip = chain_from(std::move(by_param), proj.P[0]);
     give_first_points_their_nearest_nodes(strip, proj.P);
-    if(with_extra_nodes) {
-      m_extra_off_settled_edges = true;
-      plan.best = pair_strip_nodes(strip);
-      m_extra_off_settled_edges = false;
-    } else {
-      plan.best = m_pairing.pair(strip.fid, strip.gid, strip.g, std::vector<Extra_node>(n));
-    }
+    m_extra_off_settled_edges = true;
+    plan.best = pair_strip_nodes(strip);
+    m_extra_off_settled_edges = false;
     plan.ok = true;
     plan.gid = std::move(strip.gid);
     return plan;
@@ -910,7 +856,7 @@ private:
   const std::size_t c, l, n, nv;
   const double L;
   const std::vector<Point_2d>& loop_xy;
-  bool m_extra_off_settled_edges = false; // while plan_on_chain() pairs a face's chain
+  bool m_extra_off_settled_edges = false; // while plan_on_chain() pairs a shared chain
 };
 
 /// Stage "buffer2" (paper §4.6) on one buffer zone: the strip of each cycle (Buffer_strip).
